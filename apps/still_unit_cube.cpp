@@ -1,0 +1,17 @@
+#include "exporter.hpp"
+
+int main(int argc, char** argv) {
+    CLI::App app("Renders the unit cube at the identity pose to a lossless WebP still: only the "
+                 "near (-Z) face is front-facing, so the picture is one deep-blue square.",
+                 "still-unit-cube");
+    app.footer("Example:\n  still-unit-cube unit.webp   # a red square would mean culling is "
+               "backwards");
+    ExportOptions options{"still-unit-cube.webp"};
+    add_export_options(app, options);
+
+    return run_exporter(app, argc, argv, [&] {
+        raster::Framebuffer frame(options.width, options.height);
+        raster::render_unit_cube(frame);
+        return describe_still(options, raster::write_webp_still(frame, options.output, options.effort));
+    });
+}

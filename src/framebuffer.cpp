@@ -1,0 +1,65 @@
+#include <raster/framebuffer.hpp>
+
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace raster {
+namespace {
+
+int checked_side(int side, const char* name) {
+    if (side < 1 || side > kMaxImageSide) {
+        throw std::invalid_argument(std::string("framebuffer ") + name + " must be 1.." +
+                                    std::to_string(kMaxImageSide) + ", got " +
+                                    std::to_string(side));
+    }
+    return side;
+}
+
+std::size_t offset_of(int x, int y, int width) {
+    return (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
+            static_cast<std::size_t>(x)) * 3;
+}
+
+}  // namespace
+
+Framebuffer::Framebuffer(int width, int height)
+    : width_(checked_side(width, "width")),
+      height_(checked_side(height, "height")),
+      bytes_(offset_of(0, height_, width_), 0) {}
+
+Framebuffer::Framebuffer(int width, int height, std::vector<std::uint8_t> rgb)
+    : width_(checked_side(width, "width")), height_(checked_side(height, "height")),
+      bytes_(std::move(rgb)) {
+    if (bytes_.size() != offset_of(0, height_, width_)) {
+        throw std::invalid_argument("framebuffer bytes do not match " + std::to_string(width_) +
+                                    "x" + std::to_string(height_) + " RGB");
+    }
+}
+
+void Framebuffer::set_pixel(int x, int y, Rgb colour) noexcept {
+    if (!contains(x, y)) return;
+    const std::size_t at = offset_of(x, y, width_);
+    bytes_[at] = colour.r;
+    bytes_[at + 1] = colour.g;
+    bytes_[at + 2] = colour.b;
+}
+
+Rgb Framebuffer::pixel(int x, int y) const {
+    if (!contains(x, y)) {
+        throw std::out_of_range("pixel (" + std::to_string(x) + ", " + std::to_string(y) +
+                                ") is outside the framebuffer");
+    }
+    const std::size_t at = offset_of(x, y, width_);
+    return {bytes_[at], bytes_[at + 1], bytes_[at + 2]};
+}
+
+void Framebuffer::clear(Rgb colour) noexcept {
+    for (std::size_t at = 0; at < bytes_.size(); at += 3) {
+        bytes_[at] = colour.r;
+        bytes_[at + 1] = colour.g;
+        bytes_[at + 2] = colour.b;
+    }
+}
+
+}  // namespace raster

@@ -1,0 +1,61 @@
+#include <raster/fill.hpp>
+#include <raster/ortho_camera.hpp>
+
+#include <gtest/gtest.h>
+#include <limits>
+
+using raster::OrthoCamera;
+
+TEST(OrthoCamera, WorldOriginLandsOnTheCentrePixel) {
+    EXPECT_EQ(OrthoCamera(800, 600).pixel_from_world({0, 0, 0}), glm::ivec2(400, 300));
+    EXPECT_EQ(OrthoCamera(11, 7).pixel_from_world({0, 0, 0}), glm::ivec2(5, 3));
+}
+
+TEST(OrthoCamera, UnitSquareCornersSpanTheShorterSideWithYFlipped) {
+    const OrthoCamera camera(800, 600);
+    EXPECT_EQ(camera.pixel_from_world({-1, 1, 0}), glm::ivec2(100, 0));
+    EXPECT_EQ(camera.pixel_from_world({1, 1, 0}), glm::ivec2(699, 0));
+    EXPECT_EQ(camera.pixel_from_world({-1, -1, 0}), glm::ivec2(100, 599));
+    EXPECT_EQ(camera.pixel_from_world({1, -1, 0}), glm::ivec2(699, 599));
+}
+
+TEST(OrthoCamera, PortraitImagesAreLetterboxedInsteadOfPillarboxed) {
+    const OrthoCamera camera(600, 800);
+    EXPECT_EQ(camera.pixel_from_world({-1, 1, 0}), glm::ivec2(0, 100));
+    EXPECT_EQ(camera.pixel_from_world({1, -1, 0}), glm::ivec2(599, 699));
+}
+
+TEST(OrthoCamera, EqualWorldSpansGiveEqualPixelSpansOnBothAxes) {
+    const OrthoCamera camera(800, 600);
+    const glm::dvec2 origin = camera.screen_from_world({0, 0, 0});
+    const glm::dvec2 right = camera.screen_from_world({0.5F, 0, 0});
+    const glm::dvec2 up = camera.screen_from_world({0, 0.5F, 0});
+    EXPECT_DOUBLE_EQ(right.x - origin.x, origin.y - up.y);
+    EXPECT_DOUBLE_EQ(camera.scale(), 299.5);
+}
+
+TEST(OrthoCamera, DepthDoesNotMoveAPointOnScreen) {
+    const OrthoCamera camera(800, 600);
+    for (const float z : {-100.0F, -1.0F, 0.0F, 0.25F, 1.0F, 1e6F}) {
+        EXPECT_EQ(camera.pixel_from_world({0.3F, -0.7F, z}), camera.pixel_from_world({0.3F, -0.7F, 0}));
+    }
+}
+
+TEST(OrthoCamera, LooksAlongPositiveZ) {
+    EXPECT_EQ(OrthoCamera::direction(), glm::vec3(0, 0, 1));
+}
+
+TEST(OrthoCamera, HalvesRoundTowardPositiveXAndY) {
+    EXPECT_EQ(raster::nearest_pixel({2.5, 2.5}), glm::ivec2(3, 3));
+    EXPECT_EQ(raster::nearest_pixel({-0.5, 2.4999}), glm::ivec2(0, 2));
+    EXPECT_EQ(raster::nearest_pixel({-1.5, -0.51}), glm::ivec2(-1, -1));
+}
+
+TEST(OrthoCamera, NonFiniteAndHugeCoordinatesClampInsteadOfOverflowing) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const double inf = std::numeric_limits<double>::infinity();
+    EXPECT_EQ(raster::nearest_pixel({inf, -inf}),
+              glm::ivec2(raster::kMaxFillCoordinate, -raster::kMaxFillCoordinate));
+    EXPECT_EQ(raster::nearest_pixel({nan, 1e300}),
+              glm::ivec2(-raster::kMaxFillCoordinate, raster::kMaxFillCoordinate));
+}
