@@ -17,20 +17,6 @@ std::array<glm::vec3, 8> unit_corners() {
     return corners;
 }
 
-std::vector<Edge> edges_of(const std::array<Face, 6>& faces, auto keep_face) {
-    std::vector<Edge> edges;
-    for (const Face& face : faces) {
-        if (!keep_face(face)) continue;
-        for (std::size_t i = 0; i < face.corners.size(); ++i) {
-            const std::size_t a = face.corners[i];
-            const std::size_t b = face.corners[(i + 1) % face.corners.size()];
-            const Edge edge{std::min(a, b), std::max(a, b)};
-            if (std::find(edges.begin(), edges.end(), edge) == edges.end()) edges.push_back(edge);
-        }
-    }
-    return edges;
-}
-
 }  // namespace
 
 bool is_front_facing(glm::vec3 normal, glm::vec3 view) noexcept {
@@ -64,12 +50,25 @@ std::vector<std::size_t> Cube::visible_faces(glm::vec3 view) const {
     return slots;
 }
 
-std::vector<Edge> Cube::visible_edges(glm::vec3 view) const {
-    return edges_of(faces_, [view](const Face& face) { return is_front_facing(face.normal, view); });
-}
+std::vector<Edge> Cube::visible_edges(glm::vec3 view) const { return edges_of(visible_faces(view)); }
 
 std::vector<Edge> Cube::edges() const {
-    return edges_of(faces_, [](const Face&) { return true; });
+    constexpr std::array<std::size_t, 6> kAllSlots{0, 1, 2, 3, 4, 5};
+    return edges_of(kAllSlots);
+}
+
+std::vector<Edge> Cube::edges_of(std::span<const std::size_t> slots) const {
+    std::vector<Edge> edges;
+    for (const std::size_t slot : slots) {
+        const Face& face = faces_.at(slot);
+        for (std::size_t i = 0; i < face.corners.size(); ++i) {
+            const std::size_t a = face.corners[i];
+            const std::size_t b = face.corners[(i + 1) % face.corners.size()];
+            const Edge edge{std::min(a, b), std::max(a, b)};
+            if (std::find(edges.begin(), edges.end(), edge) == edges.end()) edges.push_back(edge);
+        }
+    }
+    return edges;
 }
 
 }  // namespace raster

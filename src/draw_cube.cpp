@@ -3,17 +3,38 @@
 #include <raster/fill.hpp>
 #include <raster/line.hpp>
 
+#include <optional>
+
 namespace raster {
+namespace {
+
+std::optional<std::array<SubpixelPoint, 4>> face_on_screen(const OrthoCamera& camera,
+                                                           const Cube& cube, const Face& face) {
+    std::array<SubpixelPoint, 4> corners{};
+    for (std::size_t i = 0; i < corners.size(); ++i) {
+        const std::optional<SubpixelPoint> snapped =
+            camera.subpixel_from_world(cube.corners()[face.corners[i]]);
+        if (!snapped) return std::nullopt;
+        corners[i] = *snapped;
+    }
+    return corners;
+}
+
+}  // namespace
+
+std::vector<std::size_t> faces_toward_camera(const OrthoCamera& camera, const Cube& cube) {
+    std::vector<std::size_t> slots;
+    for (std::size_t slot = 0; slot < cube.faces().size(); ++slot) {
+        const auto corners = face_on_screen(camera, cube, cube.faces()[slot]);
+        if (corners && twice_signed_area(*corners) > 0) slots.push_back(slot);
+    }
+    return slots;
+}
 
 void draw_faces(Framebuffer& framebuffer, const OrthoCamera& camera, const Cube& cube,
                 const std::array<Rgb, 6>& palette) {
-    for (const std::size_t slot : cube.visible_faces(OrthoCamera::direction())) {
-        const Face& face = cube.faces()[slot];
-        std::array<glm::ivec2, 4> corners{};
-        for (std::size_t i = 0; i < corners.size(); ++i) {
-            corners[i] = camera.pixel_from_world(cube.corners()[face.corners[i]]);
-        }
-        fill_quad(framebuffer, corners, palette[slot]);
+    for (const std::size_t slot : faces_toward_camera(camera, cube)) {
+        fill_convex(framebuffer, *face_on_screen(camera, cube, cube.faces()[slot]), palette[slot]);
     }
 }
 
@@ -21,10 +42,11 @@ void draw_edges(Framebuffer& framebuffer, const OrthoCamera& camera, const Cube&
                 EdgeSelection selection, Rgb colour) {
     const auto edges = selection == EdgeSelection::all
                            ? cube.edges()
-                           : cube.visible_edges(OrthoCamera::direction());
+                           : cube.edges_of(faces_toward_camera(camera, cube));
     for (const Edge& edge : edges) {
-        draw_line(framebuffer, camera.pixel_from_world(cube.corners()[edge.from]),
-                  camera.pixel_from_world(cube.corners()[edge.to]), colour);
+        const auto from = camera.pixel_from_world(cube.corners()[edge.from]);
+        const auto to = camera.pixel_from_world(cube.corners()[edge.to]);
+        if (from && to) draw_line(framebuffer, *from, *to, colour);
     }
 }
 

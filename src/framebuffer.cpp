@@ -1,5 +1,6 @@
 #include <raster/framebuffer.hpp>
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -43,6 +44,18 @@ void Framebuffer::set_pixel(int x, int y, Rgb colour) noexcept {
     bytes_[at] = colour.r;
     bytes_[at + 1] = colour.g;
     bytes_[at + 2] = colour.b;
+}
+
+void Framebuffer::fill_row(int y, int x_begin, int x_end, Rgb colour) noexcept {
+    if (y < 0 || y >= height_) return;
+    x_begin = std::max(x_begin, 0);
+    x_end = std::min(x_end, width_);
+    for (std::size_t at = offset_of(x_begin, y, width_), end = offset_of(x_end, y, width_); at < end;
+         at += 3) {
+        bytes_[at] = colour.r;
+        bytes_[at + 1] = colour.g;
+        bytes_[at + 2] = colour.b;
+    }
 }
 
 Rgb Framebuffer::pixel(int x, int y) const {

@@ -74,39 +74,54 @@ SampleRange visible_samples(const DdaWalk& walk, std::int64_t major_size,
 
 }  // namespace
 
-std::int64_t draw_line(Framebuffer& framebuffer, glm::ivec2 from, glm::ivec2 to, Rgb colour) {
+std::int64_t draw_line(Framebuffer& framebuffer, glm::ivec2 from, glm::ivec2 to, Rgb colour,
+                       glm::ivec2 origin) {
+    // Shifting both ends by whole pixels shifts every sample alike, so work relative to origin.
+    const std::int64_t x0 = std::int64_t{from.x} - origin.x;
+    const std::int64_t y0 = std::int64_t{from.y} - origin.y;
     const std::int64_t dx = std::int64_t{to.x} - from.x;
     const std::int64_t dy = std::int64_t{to.y} - from.y;
     const bool x_major = std::abs(dx) >= std::abs(dy);
     const std::int64_t steps = std::max(std::abs(dx), std::abs(dy));
     if (steps == 0) {
-        if (!framebuffer.contains(from.x, from.y)) return 0;
-        framebuffer.set_pixel(from.x, from.y, colour);
+        if (x0 < 0 || y0 < 0 || x0 >= framebuffer.width() || y0 >= framebuffer.height()) return 0;
+        framebuffer.set_pixel(static_cast<int>(x0), static_cast<int>(y0), colour);
         return 1;
     }
 
-    const DdaWalk walk = x_major ? DdaWalk{from.x, dx > 0 ? 1 : -1, from.y, dy, steps}
-                                 : DdaWalk{from.y, dy > 0 ? 1 : -1, from.x, dx, steps};
+    const DdaWalk walk = x_major ? DdaWalk{x0, dx > 0 ? 1 : -1, y0, dy, steps}
+                                 : DdaWalk{y0, dy > 0 ? 1 : -1, x0, dx, steps};
     const std::int64_t major_size = x_major ? framebuffer.width() : framebuffer.height();
     const std::int64_t minor_size = x_major ? framebuffer.height() : framebuffer.width();
-    const SampleRange range = visible_samples(walk, major_size, minor_size);
+    const auto inside = [&](std::int64_t x, std::int64_t y) {
+        return x >= 0 && y >= 0 && x < framebuffer.width() && y < framebuffer.height();
+    };
+    // With both ends inside, every sample is visible and the search can be skipped.
+    const SampleRange range = inside(x0, y0) && inside(x0 + dx, y0 + dy)
+                                  ? SampleRange{0, steps}
+                                  : visible_samples(walk, major_size, minor_size);
     if (range.first > range.last) return 0;
 
     // Step the minor coordinate as quotient + remainder of (2 * delta * i + N) / 2N.
     const std::int64_t denominator = 2 * steps;
     const Wide numerator = Wide{2} * walk.minor_delta * range.first + steps;
-    std::int64_t minor = walk.minor_at(range.first);
-    auto remainder = static_cast<std::int64_t>(numerator - Wide{minor - walk.minor_start} * denominator);
-    for (std::int64_t i = range.first; i <= range.last; ++i) {
-        const auto major = static_cast<int>(walk.major_at(i));
-        const auto minor_pixel = static_cast<int>(minor);
-        if (x_major) framebuffer.set_pixel(major, minor_pixel, colour);
-        else framebuffer.set_pixel(minor_pixel, major, colour);
-
-        remainder += 2 * walk.minor_delta;
-        if (remainder >= denominator) { remainder -= denominator; ++minor; }
-        else if (remainder < 0) { remainder += denominator; --minor; }
-    }
+    const std::int64_t first_minor = walk.minor_at(range.first);
+    const auto first_remainder =
+        static_cast<std::int64_t>(numerator - Wide{first_minor - walk.minor_start} * denominator);
+    const auto step_through = [&](auto plot) {
+        std::int64_t major = walk.major_at(range.first);
+        std::int64_t minor = first_minor;
+        std::int64_t remainder = first_remainder;
+        for (std::int64_t i = range.first; i <= range.last; ++i) {
+            plot(static_cast<int>(major), static_cast<int>(minor));
+            major += walk.major_step;
+            remainder += 2 * walk.minor_delta;
+            if (remainder >= denominator) { remainder -= denominator; ++minor; }
+            else if (remainder < 0) { remainder += denominator; --minor; }
+        }
+    };
+    if (x_major) step_through([&](int x, int y) { framebuffer.set_pixel(x, y, colour); });
+    else step_through([&](int y, int x) { framebuffer.set_pixel(x, y, colour); });
     return range.last - range.first + 1;
 }
 

@@ -40,18 +40,18 @@ glm::mat4 tumble_pose(int frame, int frame_count) {
 void render_white_pixel(Framebuffer& framebuffer) {
     framebuffer.clear(kBlack);
     const OrthoCamera camera(framebuffer.width(), framebuffer.height());
-    const glm::ivec2 centre = camera.pixel_from_world({0.0F, 0.0F, 0.0F});
+    const glm::ivec2 centre = *camera.pixel_from_world({0.0F, 0.0F, 0.0F});
     framebuffer.set_pixel(centre.x, centre.y, kWhite);
 }
 
 void render_spokes(Framebuffer& framebuffer) {
     framebuffer.clear(kBlack);
     const OrthoCamera camera(framebuffer.width(), framebuffer.height());
-    const glm::ivec2 centre = camera.pixel_from_world({0.0F, 0.0F, 0.0F});
+    const glm::ivec2 centre = *camera.pixel_from_world({0.0F, 0.0F, 0.0F});
     for (int spoke = 0; spoke < kSpokeCount; ++spoke) {
         const double angle = 2.0 * std::numbers::pi * spoke / kSpokeCount;
         const glm::dvec3 tip(0.9 * std::cos(angle), 0.9 * std::sin(angle), 0.0);
-        draw_line(framebuffer, centre, camera.pixel_from_world(glm::vec3(tip)), kWhite);
+        draw_line(framebuffer, centre, *camera.pixel_from_world(glm::vec3(tip)), kWhite);
     }
 }
 

@@ -27,10 +27,10 @@ TEST(DrawCube, UnitCubeAtIdentityIsOneBlueSquare) {
     EXPECT_TRUE(looks_like(image,
                            {"...........",
                             "...........",
-                            "....BBBB...",
-                            "....BBBB...",
-                            "....BBBB...",
-                            "....BBBB...",
+                            "....BBB....",
+                            "....BBB....",
+                            "....BBB....",
+                            "...........",
                             "..........."},
                            kFaceLegend));
 }

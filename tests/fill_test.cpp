@@ -4,98 +4,130 @@
 
 #include <algorithm>
 #include <gtest/gtest.h>
+#include <vector>
 
-using raster::fill_quad;
+using raster::fill_convex;
 using raster::Framebuffer;
+using raster::SubpixelPoint;
 using test_support::looks_like;
-using Quad = std::array<glm::ivec2, 4>;
+using Polygon = std::vector<SubpixelPoint>;
 
 namespace {
 
 constexpr raster::Rgb kWhite{255, 255, 255};
 
-Framebuffer quad_on_10x5(const Quad& corners) {
+// A corner at pixel coordinates (x, y), which may fall between pixel centres.
+SubpixelPoint at(double x, double y) {
+    return {static_cast<std::int32_t>(x * raster::kSubpixelOne), static_cast<std::int32_t>(y * raster::kSubpixelOne)};
+}
+
+Framebuffer filled_10x5(const Polygon& corners) {
     Framebuffer image(10, 5);
-    fill_quad(image, corners, kWhite);
+    fill_convex(image, corners, kWhite);
     return image;
 }
 
-Quad starting_at(Quad corners, std::size_t first) {
+Polygon starting_at(Polygon corners, std::size_t first) {
     std::rotate(corners.begin(), corners.begin() + static_cast<std::ptrdiff_t>(first), corners.end());
-    return corners;
-}
-
-Quad reversed(Quad corners) {
-    std::reverse(corners.begin(), corners.end());
     return corners;
 }
 
 }  // namespace
 
-TEST(FillQuad, RectangleIncludesItsEdges) {
-    EXPECT_TRUE(looks_like(quad_on_10x5({{{2, 1}, {7, 1}, {7, 3}, {2, 3}}}),
-                           {"..........", "..++++++..", "..++++++..", "..++++++..", ".........."}));
+TEST(FillConvex, RectangleOnPixelCentresTakesItsTopAndLeftEdgesOnly) {
+    EXPECT_TRUE(looks_like(filled_10x5({at(2, 1), at(7, 1), at(7, 3), at(2, 3)}),
+                           {"..........", "..+++++...", "..+++++...", "..........", ".........."}));
 }
 
-TEST(FillQuad, SlantedQuadKeepsPixelCentresOnOrInsideEdges) {
-    EXPECT_TRUE(looks_like(quad_on_10x5({{{2, 3}, {7, 3}, {8, 1}, {1, 1}}}),
-                           {"..........", ".++++++++.", "..++++++..", "..++++++..", ".........."}));
+TEST(FillConvex, RectangleBetweenCentresCoversTheCentresInside) {
+    EXPECT_TRUE(looks_like(filled_10x5({at(1.5, 0.5), at(6.5, 0.5), at(6.5, 3.5), at(1.5, 3.5)}),
+                           {"..........", "..+++++...", "..+++++...", "..+++++...", ".........."}));
 }
 
-TEST(FillQuad, DiamondFillsRowsSymmetrically) {
-    EXPECT_TRUE(looks_like(quad_on_10x5({{{4, 0}, {8, 2}, {4, 4}, {0, 2}}}),
-                           {"....+.....", "..+++++...", "+++++++++.", "..+++++...", "....+....."}));
+TEST(FillConvex, SlantedQuadCoversCentresByTheTopLeftRule) {
+    EXPECT_TRUE(looks_like(filled_10x5({at(2, 3), at(7, 3), at(8, 1), at(1, 1)}),
+                           {"..........", ".+++++++..", "..++++++..", "..........", ".........."}));
 }
 
-TEST(FillQuad, EitherWindingAndEveryStartingCornerFillTheSamePixels) {
-    const Quad slanted{{{2, 3}, {7, 3}, {8, 1}, {1, 1}}};
-    const Framebuffer expected = quad_on_10x5(slanted);
-    for (std::size_t first = 0; first < 4; ++first) {
-        EXPECT_EQ(quad_on_10x5(starting_at(slanted, first)), expected) << "start " << first;
-        EXPECT_EQ(quad_on_10x5(reversed(starting_at(slanted, first))), expected)
-            << "reversed, start " << first;
+TEST(FillConvex, EitherWindingAndEveryStartingCornerFillTheSamePixels) {
+    const Polygon slanted{at(2.25, 3.5), at(7, 3.5), at(8.5, 0.75), at(1, 1)};
+    const Framebuffer expected = filled_10x5(slanted);
+    for (std::size_t first = 0; first < slanted.size(); ++first) {
+        Polygon reversed = starting_at(slanted, first);
+        EXPECT_EQ(filled_10x5(reversed), expected) << "start " << first;
+        std::reverse(reversed.begin(), reversed.end());
+        EXPECT_EQ(filled_10x5(reversed), expected) << "reversed, start " << first;
     }
 }
 
-TEST(FillQuad, ClipsAtTheRightBorder) {
-    EXPECT_TRUE(looks_like(quad_on_10x5({{{2, 1}, {14, 1}, {14, 3}, {2, 3}}}),
-                           {"..........", "..++++++++", "..++++++++", "..++++++++", ".........."}));
+TEST(FillConvex, TwoTrianglesSharingAnEdgeCoverEveryPixelExactlyOnce) {
+    const Polygon left{at(0.5, 0.25), at(8.75, 4.5), at(0.5, 4.5)};
+    const Polygon right{at(0.5, 0.25), at(8.75, 0.25), at(8.75, 4.5)};
+    std::vector<int> hits(50, 0);
+    const raster::PixelRect clip{0, 0, 10, 5};
+    for (const Polygon& triangle : {left, right}) {
+        raster::rasterize_convex(triangle, clip, [&](raster::Span span) {
+            for (int x = span.x_begin; x < span.x_end; ++x) ++hits[static_cast<std::size_t>(span.y * 10 + x)];
+        });
+    }
+    for (int y = 0; y < 5; ++y) {
+        for (int x = 0; x < 10; ++x) {
+            const bool inside = x >= 1 && x <= 8 && y >= 1 && y <= 4;
+            EXPECT_EQ(hits[static_cast<std::size_t>(y * 10 + x)], inside ? 1 : 0) << "pixel (" << x << ", " << y << ")";
+        }
+    }
 }
 
-TEST(FillQuad, ClipsAtTheTopLeftAndTestsOnlyVisiblePixels) {
+TEST(FillConvex, TriangleLeavesOutCentresOnItsRightAndBottomEdges) {
+    EXPECT_TRUE(looks_like(filled_10x5({at(0, 0), at(6, 0), at(0, 3)}),
+                           {"++++++....", "++++......", "++........", "..........", ".........."}));
+}
+
+TEST(FillConvex, ClipsAtTheBufferAndExaminesOnlyVisibleRows) {
     Framebuffer image(10, 5);
-    EXPECT_EQ(fill_quad(image, {{{-5, -5}, {4, -5}, {4, 2}, {-5, 2}}}, kWhite), 15);
+    EXPECT_EQ(fill_convex(image, Polygon{at(-5, -5), at(4.5, -5), at(4.5, 2.5), at(-5, 2.5)}, kWhite), 3);
     EXPECT_TRUE(looks_like(image, {"+++++.....", "+++++.....", "+++++.....", "..........", ".........."}));
 }
 
-TEST(FillQuad, HugeQuadCostsOnlyTheBufferItCovers) {
+TEST(FillConvex, HugePolygonCostsOneStepPerVisibleRow) {
     Framebuffer image(10, 5);
-    const int far = 100'000'000;
-    EXPECT_EQ(fill_quad(image, {{{-far, -far}, {far, -far}, {far, far}, {-far, far}}}, kWhite), 50);
+    const double far = 2'000'000;
+    EXPECT_EQ(fill_convex(image, Polygon{at(-far, -far), at(far, -far), at(far, far), at(-far, far)}, kWhite), 5);
     EXPECT_TRUE(looks_like(image, std::vector<std::string>(5, "++++++++++")));
 }
 
-TEST(FillQuad, QuadOutsideTheBufferTestsNothing) {
+TEST(FillConvex, PolygonOutsideTheBufferExaminesNothing) {
     Framebuffer image(10, 5);
-    EXPECT_EQ(fill_quad(image, {{{12, 1}, {20, 1}, {20, 3}, {12, 3}}}, kWhite), 0);
-    EXPECT_EQ(fill_quad(image, {{{-9, -9}, {-2, -9}, {-2, -1}, {-9, -1}}}, kWhite), 0);
+    EXPECT_EQ(fill_convex(image, Polygon{at(12, 1), at(20, 1), at(20, 3)}, kWhite), 0);
+    EXPECT_EQ(fill_convex(image, Polygon{at(-9, -9), at(-2, -9), at(-2, -1)}, kWhite), 0);
     EXPECT_EQ(image, Framebuffer(10, 5));
 }
 
-TEST(FillQuad, ZeroAreaQuadsDrawNothing) {
-    EXPECT_EQ(quad_on_10x5({{{4, 2}, {4, 2}, {4, 2}, {4, 2}}}), Framebuffer(10, 5));
-    EXPECT_EQ(quad_on_10x5({{{2, 3}, {7, 3}, {7, 3}, {2, 3}}}), Framebuffer(10, 5));
-    EXPECT_EQ(quad_on_10x5({{{1, 1}, {3, 2}, {5, 3}, {7, 4}}}), Framebuffer(10, 5));
+TEST(FillConvex, ZeroAreaPolygonsDrawNothing) {
+    EXPECT_EQ(filled_10x5({at(4, 2), at(4, 2), at(4, 2), at(4, 2)}), Framebuffer(10, 5));
+    EXPECT_EQ(filled_10x5({at(2, 3), at(7, 3), at(7, 3), at(2, 3)}), Framebuffer(10, 5));
+    EXPECT_EQ(filled_10x5({at(1, 1), at(3, 2), at(5, 3), at(7, 4)}), Framebuffer(10, 5));
+    EXPECT_EQ(filled_10x5({at(1, 1), at(1, 1)}), Framebuffer(10, 5));
 }
 
-TEST(FillQuad, QuadWithARepeatedCornerFillsItsTriangle) {
-    EXPECT_TRUE(looks_like(quad_on_10x5({{{0, 0}, {6, 0}, {6, 0}, {0, 3}}}),
-                           {"+++++++...", "+++++.....", "+++.......", "+.........", ".........."}));
+TEST(FillConvex, SliverCoversOnlyTheCentresItReallyContains) {
+    // A triangle 1/256 px wide along x = 3 holds the centres of column 3 on its left edge; the
+    // top vertex also lies on the right edge, which the rule leaves out.
+    EXPECT_TRUE(looks_like(filled_10x5({at(3, 0), at(3 + 1.0 / 256, 4.5), at(3, 4.5)}),
+                           {"..........", "...+......", "...+......", "...+......", "...+......"}));
+    EXPECT_EQ(filled_10x5({at(3.5, 0), at(3.5 + 1.0 / 256, 4.5), at(3.5, 4.5)}), Framebuffer(10, 5));
 }
 
-TEST(FillQuad, CornersBeyondTheExactRangeDrawNothing) {
+TEST(FillConvex, OriginPlacesTheBufferAnywhereInThePlane) {
     Framebuffer image(10, 5);
-    const int beyond = raster::kMaxFillCoordinate + 1;
-    EXPECT_EQ(fill_quad(image, {{{-beyond, 0}, {5, 0}, {5, 4}, {0, 4}}}, kWhite), 0);
-    EXPECT_EQ(image, Framebuffer(10, 5));
+    const glm::ivec2 origin{300'000, -40'000};
+    fill_convex(image, Polygon{at(300'002, -39'999), at(300'007, -39'999), at(300'007, -39'997), at(300'002, -39'997)},
+                kWhite, origin);
+    EXPECT_EQ(image, filled_10x5({at(2, 1), at(7, 1), at(7, 3), at(2, 3)}));
+}
+
+TEST(FillConvex, SignedAreaIsPositiveForCornersClockwiseOnScreen) {
+    EXPECT_GT(raster::twice_signed_area(Polygon{at(0, 0), at(1, 0), at(1, 1)}), 0);
+    EXPECT_LT(raster::twice_signed_area(Polygon{at(0, 0), at(1, 1), at(1, 0)}), 0);
+    EXPECT_EQ(raster::twice_signed_area(Polygon{at(0, 0), at(1, 1), at(2, 2)}), 0);
 }

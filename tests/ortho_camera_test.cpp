@@ -1,4 +1,3 @@
-#include <raster/fill.hpp>
 #include <raster/ortho_camera.hpp>
 
 #include <gtest/gtest.h>
@@ -37,7 +36,7 @@ TEST(OrthoCamera, EqualWorldSpansGiveEqualPixelSpansOnBothAxes) {
 TEST(OrthoCamera, DepthDoesNotMoveAPointOnScreen) {
     const OrthoCamera camera(800, 600);
     for (const float z : {-100.0F, -1.0F, 0.0F, 0.25F, 1.0F, 1e6F}) {
-        EXPECT_EQ(camera.pixel_from_world({0.3F, -0.7F, z}), camera.pixel_from_world({0.3F, -0.7F, 0}));
+        EXPECT_EQ(camera.subpixel_from_world({0.3F, -0.7F, z}), camera.subpixel_from_world({0.3F, -0.7F, 0}));
     }
 }
 
@@ -45,17 +44,27 @@ TEST(OrthoCamera, LooksAlongPositiveZ) {
     EXPECT_EQ(OrthoCamera::direction(), glm::vec3(0, 0, 1));
 }
 
-TEST(OrthoCamera, HalvesRoundTowardPositiveXAndY) {
-    EXPECT_EQ(raster::nearest_pixel({2.5, 2.5}), glm::ivec2(3, 3));
-    EXPECT_EQ(raster::nearest_pixel({-0.5, 2.4999}), glm::ivec2(0, 2));
-    EXPECT_EQ(raster::nearest_pixel({-1.5, -0.51}), glm::ivec2(-1, -1));
+TEST(OrthoCamera, SnapsToTheNearestSubpixelWithHalvesUp) {
+    EXPECT_EQ(raster::snap_to_subpixel({2.5, 1.0 / 512}), (raster::SubpixelPoint{640, 1}));
+    EXPECT_EQ(raster::snap_to_subpixel({-1.0 / 512, -3.0 / 512}), (raster::SubpixelPoint{0, -1}));
 }
 
-TEST(OrthoCamera, NonFiniteAndHugeCoordinatesClampInsteadOfOverflowing) {
+TEST(OrthoCamera, PixelsRoundHalvesTowardPositiveXAndY) {
+    EXPECT_EQ(raster::nearest_pixel(*raster::snap_to_subpixel({2.5, 2.5})), glm::ivec2(3, 3));
+    EXPECT_EQ(raster::nearest_pixel(*raster::snap_to_subpixel({-0.5, 2.49})), glm::ivec2(0, 2));
+    EXPECT_EQ(raster::nearest_pixel(*raster::snap_to_subpixel({-1.5, -0.51})), glm::ivec2(-1, -1));
+}
+
+TEST(OrthoCamera, NonFiniteAndFarAwayPositionsGiveNoPixel) {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     const double inf = std::numeric_limits<double>::infinity();
-    EXPECT_EQ(raster::nearest_pixel({inf, -inf}),
-              glm::ivec2(raster::kMaxFillCoordinate, -raster::kMaxFillCoordinate));
-    EXPECT_EQ(raster::nearest_pixel({nan, 1e300}),
-              glm::ivec2(-raster::kMaxFillCoordinate, raster::kMaxFillCoordinate));
+    const double far = raster::kMaxSubpixelCoordinate + 1.0;
+    for (const glm::dvec2 screen : {glm::dvec2(nan, 0), glm::dvec2(0, nan), glm::dvec2(inf, 0),
+                                    glm::dvec2(0, -inf), glm::dvec2(far, 0), glm::dvec2(0, -far)}) {
+        EXPECT_FALSE(raster::snap_to_subpixel(screen).has_value()) << screen.x << ", " << screen.y;
+    }
+    EXPECT_TRUE(raster::snap_to_subpixel({far - 2.0, 1 - far}).has_value());
+    const raster::OrthoCamera camera(800, 600);
+    EXPECT_FALSE(camera.pixel_from_world({std::numeric_limits<float>::quiet_NaN(), 0, 0}).has_value());
+    EXPECT_FALSE(camera.subpixel_from_world({0, std::numeric_limits<float>::infinity(), 0}).has_value());
 }

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cstddef>
+#include <span>
 #include <vector>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
@@ -48,6 +49,8 @@ public:
     [[nodiscard]] std::vector<Edge> visible_edges(glm::vec3 view) const;
     // All twelve edges.
     [[nodiscard]] std::vector<Edge> edges() const;
+    // Edges of the faces in `slots`, each listed once.
+    [[nodiscard]] std::vector<Edge> edges_of(std::span<const std::size_t> slots) const;
 
 private:
     std::array<glm::vec3, 8> corners_;

@@ -1,22 +1,45 @@
 #pragma once
 
 #include <raster/framebuffer.hpp>
+#include <raster/subpixel.hpp>
 
-#include <array>
 #include <cstdint>
+#include <functional>
+#include <span>
 #include <glm/vec2.hpp>
 
 namespace raster {
 
-// Corner coordinates beyond this many pixels from the origin make fill_quad draw nothing
-// (they would overflow the exact 64-bit edge functions).
-inline constexpr int kMaxFillCoordinate = 1 << 29;
+// A run of covered pixels on row y: x_begin included, x_end excluded.
+struct Span {
+    int y;
+    int x_begin;
+    int x_end;
+};
 
-// Fills a convex quad given by its corners in order (either winding, any starting corner):
-// a pixel is painted when its centre lies inside or on every edge (doc/conventions.md#fill).
-// A quad of zero area draws nothing. The scan covers the quad's bounding box clamped to the
-// buffer; returns the number of pixels tested.
-std::int64_t fill_quad(Framebuffer& framebuffer, const std::array<glm::ivec2, 4>& corners,
-                       Rgb colour);
+// A rectangle of pixels: the part of the plane a target can receive.
+struct PixelRect {
+    int x;
+    int y;
+    int width;
+    int height;
+};
+
+// Twice the signed area of a polygon in subpixel units squared (shoelace formula). Positive
+// means the corners run clockwise on screen, which is how front faces arrive
+// (doc/conventions.md#facing).
+[[nodiscard]] std::int64_t twice_signed_area(std::span<const SubpixelPoint> corners) noexcept;
+
+// Visits, row by row, the pixels of `clip` whose centres a convex polygon covers: inside every
+// edge, or on an edge that is a top or left edge (doc/conventions.md#fill). Either winding works;
+// zero area covers nothing, nor do polygons with more than 8 corners or corners beyond
+// kMaxSubpixelCoordinate. Each row's span comes from exact 64-bit edge functions solved for x,
+// so the work is one step per row of the clipped bounding box. Returns the rows examined.
+std::int64_t rasterize_convex(std::span<const SubpixelPoint> corners, PixelRect clip,
+                              const std::function<void(Span)>& visit);
+
+// Paints the covered pixels; the framebuffer's top-left pixel sits at `origin`.
+std::int64_t fill_convex(Framebuffer& framebuffer, std::span<const SubpixelPoint> corners,
+                         Rgb colour, glm::ivec2 origin = {0, 0});
 
 }  // namespace raster

@@ -34,6 +34,8 @@ public:
 
     // Writes one pixel; a write outside the buffer is skipped, so primitives need no clipping.
     void set_pixel(int x, int y, Rgb colour) noexcept;
+    // Paints pixels [x_begin, x_end) of row y, skipping the part outside the buffer.
+    void fill_row(int y, int x_begin, int x_end, Rgb colour) noexcept;
     // Throws std::out_of_range outside the buffer.
     [[nodiscard]] Rgb pixel(int x, int y) const;
     void clear(Rgb colour) noexcept;

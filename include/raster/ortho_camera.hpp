@@ -1,5 +1,8 @@
 #pragma once
 
+#include <raster/subpixel.hpp>
+
+#include <optional>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
@@ -14,8 +17,11 @@ public:
 
     // Continuous pixel coordinates: pixel centres sit on whole numbers, y grows downward.
     [[nodiscard]] glm::dvec2 screen_from_world(glm::vec3 world) const noexcept;
-    // The pixel whose centre is nearest; halves round up (toward +x and +y).
-    [[nodiscard]] glm::ivec2 pixel_from_world(glm::vec3 world) const noexcept;
+    // The screen position snapped to the subpixel grid the fill works on; nothing if not finite
+    // or too far away.
+    [[nodiscard]] std::optional<SubpixelPoint> subpixel_from_world(glm::vec3 world) const noexcept;
+    // The pixel whose centre is nearest the snapped position (halves round up).
+    [[nodiscard]] std::optional<glm::ivec2> pixel_from_world(glm::vec3 world) const noexcept;
     // The direction the camera looks in, pointing into the scene.
     [[nodiscard]] static constexpr glm::vec3 direction() noexcept { return {0.0F, 0.0F, 1.0F}; }
 
@@ -26,9 +32,5 @@ private:
     double scale_;
     glm::dvec2 centre_;
 };
-
-// Rounds continuous pixel coordinates to the nearest pixel (halves up), clamped to a range that
-// keeps later integer arithmetic exact; NaN goes to the far negative edge.
-[[nodiscard]] glm::ivec2 nearest_pixel(glm::dvec2 screen) noexcept;
 
 }  // namespace raster
