@@ -1,5 +1,6 @@
 #include "corpus.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -78,32 +79,32 @@ MeshCase fan(std::mt19937& random, std::int64_t offset, const std::string& name,
     const auto o = static_cast<double>(offset);
     std::uniform_real_distribution<double> jitter(-1.0, 1.0);
     const double cx = kWindow / 2.0 + jitter(random), cy = kWindow / 2.0 + jitter(random);
-    constexpr int spokes = 24;
+    constexpr std::size_t spokes = 24;
     std::vector<ExactPoint> rim;
-    for (int k = 0; k < spokes; ++k) {
-        const double a = 2 * std::numbers::pi * (k + 0.3 * jitter(random)) / spokes;
+    for (std::size_t k = 0; k < spokes; ++k) {
+        const double a = 2 * std::numbers::pi * (static_cast<double>(k) + 0.3 * jitter(random)) / spokes;
         rim.push_back(on_grid(o + cx + radius * std::cos(a), o + cy + radius * std::sin(a), kSubpixelBits));
     }
     const ExactPoint hub = on_grid(o + cx, o + cy, kSubpixelBits);
     MeshCase mesh{at_offset(name, offset), window_at(offset), {}};
-    for (int k = 0; k < spokes; ++k) mesh.triangles.push_back({hub, rim[k], rim[(k + 1) % spokes]});
+    for (std::size_t k = 0; k < spokes; ++k) mesh.triangles.push_back({hub, rim[k], rim[(k + 1) % spokes]});
     return mesh;
 }
 
 MeshCase grid(std::mt19937& random, std::int64_t offset, const std::string& name, double start, double cell) {
     const auto o = static_cast<double>(offset);
     std::uniform_real_distribution<double> jitter(-0.3 * cell, 0.3 * cell);
-    constexpr int cells = 6;
+    constexpr std::size_t cells = 6;
     std::vector<std::vector<ExactPoint>> points(cells + 1);
-    for (int j = 0; j <= cells; ++j) {
-        for (int i = 0; i <= cells; ++i) {
-            points[j].push_back(on_grid(o + start + i * cell + jitter(random),
-                                        o + start + j * cell + jitter(random), kSubpixelBits));
+    for (std::size_t j = 0; j <= cells; ++j) {
+        for (std::size_t i = 0; i <= cells; ++i) {
+            points[j].push_back(on_grid(o + start + static_cast<double>(i) * cell + jitter(random),
+                                        o + start + static_cast<double>(j) * cell + jitter(random), kSubpixelBits));
         }
     }
     MeshCase mesh{at_offset(name, offset), window_at(offset), {}};
-    for (int j = 0; j < cells; ++j) {
-        for (int i = 0; i < cells; ++i) {
+    for (std::size_t j = 0; j < cells; ++j) {
+        for (std::size_t i = 0; i < cells; ++i) {
             mesh.triangles.push_back({points[j][i], points[j][i + 1], points[j + 1][i + 1]});
             mesh.triangles.push_back({points[j][i], points[j + 1][i + 1], points[j + 1][i]});
         }

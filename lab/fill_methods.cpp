@@ -253,13 +253,13 @@ void blocked_fixed8(std::span<const glm::dvec2> corners, Coverage& target) {
 }
 
 constexpr std::array<FillMethod, 7> kFillMethods{{
-    {"seed-bbox-float", "seed: bbox, float, whole pixels", seed_bbox_float, false},
-    {"edge-float", "float edge functions, 8-bit", edge_float, false},
-    {"edge-fixed4", "edge functions, 4-bit subpixel", edge_fixed<4>, false},
-    {"edge-fixed8", "edge functions, 8-bit subpixel", edge_fixed<8>, false},
-    {"blocked-fixed8", "8x8 blocks, 8-bit subpixel", blocked_fixed8, false},
-    {"scanline-float", "scanline, double, 8-bit", scanline_float, false},
-    {"span-exact8", "exact spans, 8-bit (product)", span_exact, true},
+    {"seed-bbox-float", "seed: bbox + float on whole pixels", seed_bbox_float, false},
+    {"edge-float", "float edge functions (8-bit)", edge_float, false},
+    {"edge-fixed4", "integer edge functions (4-bit)", edge_fixed<4>, false},
+    {"edge-fixed8", "integer edge functions (8-bit)", edge_fixed<8>, false},
+    {"blocked-fixed8", "8x8 blocks (8-bit)", blocked_fixed8, false},
+    {"scanline-float", "double scanline (8-bit)", scanline_float, false},
+    {"span-exact8", "exact spans (8-bit): product", span_exact, true},
 }};
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include "measures.hpp"
 #include "speed.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -45,12 +46,19 @@ void mark_pareto(std::vector<Summary>& methods) {
     }
 }
 
-void write_summary(const fs::path& path, const std::vector<Summary>& methods, const std::string& error_name) {
-    std::ofstream out(path);
-    out << "method,label,product,mpixels_per_s," << error_name << ",pareto\n";
+// Writes <name>.csv with every method and <name>-pareto.csv with the front, fastest first.
+void write_summary(const fs::path& directory, const std::string& name, std::vector<Summary> methods,
+                   const std::string& error_name) {
+    std::sort(methods.begin(), methods.end(), [](const Summary& a, const Summary& b) { return a.speed > b.speed; });
+    std::ofstream all(directory / (name + ".csv"));
+    std::ofstream front(directory / (name + "-pareto.csv"));
+    for (std::ofstream* out : {&all, &front}) *out << "method,label,product,mpixels_per_s," << error_name << ",pareto\n";
     for (const Summary& m : methods) {
-        out << m.id << ",\"" << m.label << "\"," << m.is_product << "," << m.speed / 1e6 << "," << m.error << ","
-            << m.pareto << "\n";
+        for (std::ofstream* out : {&all, &front}) {
+            if (out == &front && !m.pareto) continue;
+            *out << m.id << "," << m.label << "," << m.is_product << "," << m.speed / 1e6 << "," << m.error << ","
+                 << m.pareto << "\n";
+        }
     }
 }
 
@@ -82,7 +90,7 @@ std::vector<Summary> measure_fills(const fs::path& out, const std::vector<lab::S
                              geometric_mean_pixels(speeds, method.id), ppm});
     }
     mark_pareto(summaries);
-    write_summary(out / "fill.csv", summaries, "mismatches_per_million");
+    write_summary(out, "fill", summaries, "mismatches_per_million");
     return summaries;
 }
 
@@ -106,7 +114,7 @@ std::vector<Summary> measure_lines(const fs::path& out, const std::vector<lab::S
                              geometric_mean_pixels(speeds, method.id), ppm});
     }
     mark_pareto(summaries);
-    write_summary(out / "line.csv", summaries, "mismatches_per_million");
+    write_summary(out, "line", summaries, "mismatches_per_million");
     return summaries;
 }
 

@@ -49,7 +49,7 @@ std::int64_t integer_dda(raster::Framebuffer& target, glm::ivec2 origin, glm::iv
 constexpr std::array<LineMethod, 3> kLineMethods{{
     {"seed-float-dda", "seed: float DDA", seed_float_dda, false},
     {"bresenham", "Bresenham", bresenham, false},
-    {"integer-dda", "exact integer DDA (product)", integer_dda, true},
+    {"integer-dda", "exact integer DDA: product", integer_dda, true},
 }};
 
 }  // namespace

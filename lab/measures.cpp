@@ -106,7 +106,9 @@ LineAccuracy measure_segments(const LineMethod& method, const SegmentCorpus& cor
     const PixelRect& w = corpus.window;
     raster::Framebuffer drawn(w.width, w.height);
     Coverage expected(w);
-    for (const auto& [from, to] : corpus.segments) {
+    for (const auto& segment : corpus.segments) {
+        const glm::ivec2 from = segment.first;
+        const glm::ivec2 to = segment.second;
         drawn.clear({});
         expected.clear();
         result.steps += method.draw(drawn, {w.x, w.y}, from, to);
@@ -120,7 +122,7 @@ LineAccuracy measure_segments(const LineMethod& method, const SegmentCorpus& cor
             expected_count += ideal;
             result.mismatches += lit != ideal;
             if (!lit) return;
-            result.max_distance = std::max(result.max_distance, distance_to_segment({x, y}, from, to));
+            result.max_distance = std::max(result.max_distance, distance_to_segment(glm::dvec2(static_cast<double>(x), static_cast<double>(y)), glm::dvec2(from), glm::dvec2(to)));
             bool near = false;
             for (std::int64_t dy = -1; dy <= 1 && !near; ++dy) {
                 for (std::int64_t dx = -1; dx <= 1 && !near; ++dx) {

@@ -3,17 +3,20 @@
 #include <algorithm>
 #include <cstdlib>
 #include <array>
-#include <limits>
 
 namespace raster {
 namespace {
 
-// floor(n / d) and ceil(n / d) for d > 0.
+// floor(n / d) for d > 0.
 std::int64_t floor_div(std::int64_t n, std::int64_t d) {
     const std::int64_t q = n / d;
     return (n % d != 0 && n < 0) ? q - 1 : q;
 }
-std::int64_t ceil_div(std::int64_t n, std::int64_t d) { return -floor_div(-n, d); }
+
+// The first and last pixel whose centre lies in [low, high] (subpixel units); an arithmetic
+// shift is a floor division by kSubpixelOne.
+std::int64_t first_pixel_at_or_after(std::int64_t low) { return -((-low) >> kSubpixelBits); }
+std::int64_t last_pixel_at_or_before(std::int64_t high) { return high >> kSubpixelBits; }
 
 // E(i, j) = step_x * i + step_y * j + offset at pixel (i, j), oriented so the inside is E >= bias;
 // bias is 1 on edges that are neither top nor left, so samples exactly on them stay outside.
@@ -32,18 +35,65 @@ struct EdgeFunction {
     }
 };
 
-// The columns [first, last] of row j inside one edge; first > last when none are.
-void clamp_to_edge(const EdgeFunction& edge, std::int64_t row, std::int64_t& first,
-                   std::int64_t& last) {
-    const std::int64_t need = edge.bias - (edge.step_y * row + edge.offset);  // step_x * i >= need
-    if (edge.step_x > 0) {
-        first = std::max(first, ceil_div(need, edge.step_x));
-    } else if (edge.step_x < 0) {
-        last = std::min(last, floor_div(-need, -edge.step_x));
-    } else if (need > 0) {
-        last = first - 1;
+// One edge's limit on the span of successive rows. The limit is floor(numerator / divisor); it is
+// kept as quotient and remainder, so after one division at the first row each row costs two
+// additions and stays exact.
+class EdgeWalker {
+public:
+    enum class Kind { left, right, row };  // limits the first column, the last, or the whole row
+
+    EdgeWalker() = default;
+    // With `stepping` off the walker serves one row only and skips the second division.
+    EdgeWalker(const EdgeFunction& edge, std::int64_t row, bool stepping) {
+        // Inside means step_x * i >= need(row), and need falls by step_y from row to row.
+        const std::int64_t need = edge.bias - (edge.step_y * row + edge.offset);
+        std::int64_t numerator = need;
+        std::int64_t change = -edge.step_y;
+        if (edge.step_x > 0) {  // first column: ceil(need / step_x)
+            kind_ = Kind::left;
+            divisor_ = edge.step_x;
+            numerator += divisor_ - 1;
+        } else if (edge.step_x < 0) {  // last column: floor(-need / -step_x)
+            kind_ = Kind::right;
+            divisor_ = -edge.step_x;
+            numerator = -need;
+            change = edge.step_y;
+        } else {  // a horizontal edge admits the whole row while need <= 0
+            kind_ = Kind::row;
+            divisor_ = 1;
+        }
+        quotient_ = floor_div(numerator, divisor_);
+        remainder_ = numerator - quotient_ * divisor_;
+        if (!stepping) return;
+        quotient_step_ = floor_div(change, divisor_);
+        remainder_step_ = change - quotient_step_ * divisor_;
     }
-}
+
+    void clamp(std::int64_t& first, std::int64_t& last) const {
+        switch (kind_) {
+        case Kind::left: first = std::max(first, quotient_); break;
+        case Kind::right: last = std::min(last, quotient_); break;
+        case Kind::row: if (quotient_ > 0) last = first - 1; break;
+        }
+    }
+
+    void next_row() {
+        quotient_ += quotient_step_;
+        remainder_ += remainder_step_;
+        if (remainder_ >= divisor_) {
+            remainder_ -= divisor_;
+            ++quotient_;
+        }
+    }
+
+private:
+    Kind kind_ = Kind::row;
+    std::int64_t divisor_ = 1;
+    std::int64_t quotient_ = 0;
+    std::int64_t remainder_ = 0;
+    std::int64_t quotient_step_ = 0;
+    std::int64_t remainder_step_ = 0;
+};
 
 constexpr std::size_t kMaxCorners = 8;
 
@@ -59,50 +109,45 @@ std::int64_t twice_signed_area(std::span<const SubpixelPoint> corners) noexcept 
     return sum;
 }
 
-std::int64_t rasterize_convex(std::span<const SubpixelPoint> corners, PixelRect clip,
-                              const std::function<void(Span)>& visit) {
-    if (corners.size() < 3 || corners.size() > kMaxCorners) return 0;
+std::int64_t rasterize_convex(std::span<const SubpixelPoint> corners, PixelRect clip, SpanVisitor visit) {
+    const std::size_t count = corners.size();
+    if (count < 3 || count > kMaxCorners) return 0;
     constexpr std::int64_t limit = std::int64_t{kMaxSubpixelCoordinate} * kSubpixelOne;
+    std::int64_t min_x = corners[0].x, max_x = corners[0].x, min_y = corners[0].y, max_y = corners[0].y;
     for (const SubpixelPoint c : corners) {
         if (std::abs(std::int64_t{c.x}) > limit || std::abs(std::int64_t{c.y}) > limit) return 0;
+        min_x = std::min<std::int64_t>(min_x, c.x), max_x = std::max<std::int64_t>(max_x, c.x);
+        min_y = std::min<std::int64_t>(min_y, c.y), max_y = std::max<std::int64_t>(max_y, c.y);
+    }
+    // Cheap rejections first: no pixel centre of the clip inside the bounding box.
+    const std::int64_t first_row = std::max<std::int64_t>(first_pixel_at_or_after(min_y), clip.y);
+    const std::int64_t last_row =
+        std::min<std::int64_t>(last_pixel_at_or_before(max_y), std::int64_t{clip.y} + clip.height - 1);
+    if (first_row > last_row || first_pixel_at_or_after(min_x) >= std::int64_t{clip.x} + clip.width ||
+        last_pixel_at_or_before(max_x) < clip.x) {
+        return 0;
     }
     const std::int64_t area = twice_signed_area(corners);
     if (area == 0) return 0;
 
-    std::array<EdgeFunction, kMaxCorners> edges{};
-    std::int64_t min_x = corners[0].x;
-    std::int64_t max_x = corners[0].x;
-    std::int64_t min_y = corners[0].y;
-    std::int64_t max_y = corners[0].y;
-    for (std::size_t i = 0; i < corners.size(); ++i) {
+    std::array<EdgeWalker, kMaxCorners> walkers{};
+    const bool several_rows = last_row > first_row;
+    for (std::size_t i = 0; i < count; ++i) {
         SubpixelPoint a = corners[i];
-        SubpixelPoint b = corners[(i + 1) % corners.size()];
+        SubpixelPoint b = corners[(i + 1) % count];
         if (area < 0) std::swap(a, b);  // walk every polygon in the same rotational sense
-        edges[i] = EdgeFunction::through(a, b);
-        min_x = std::min<std::int64_t>(min_x, corners[i].x);
-        max_x = std::max<std::int64_t>(max_x, corners[i].x);
-        min_y = std::min<std::int64_t>(min_y, corners[i].y);
-        max_y = std::max<std::int64_t>(max_y, corners[i].y);
+        walkers[i] = EdgeWalker(EdgeFunction::through(a, b), first_row, several_rows);
     }
-    if (ceil_div(min_x, kSubpixelOne) >= std::int64_t{clip.x} + clip.width ||
-        floor_div(max_x, kSubpixelOne) < clip.x) {
-        return 0;  // entirely left or right of the clip
-    }
-
-    const std::int64_t first_row = std::max<std::int64_t>(ceil_div(min_y, kSubpixelOne), clip.y);
-    const std::int64_t last_row =
-        std::min<std::int64_t>(floor_div(max_y, kSubpixelOne), std::int64_t{clip.y} + clip.height - 1);
     for (std::int64_t row = first_row; row <= last_row; ++row) {
         std::int64_t first = clip.x;
         std::int64_t last = std::int64_t{clip.x} + clip.width - 1;
-        for (std::size_t i = 0; i < corners.size() && first <= last; ++i) {
-            clamp_to_edge(edges[i], row, first, last);
+        for (std::size_t i = 0; i < count; ++i) {
+            walkers[i].clamp(first, last);
+            walkers[i].next_row();
         }
-        if (first <= last) {
-            visit({static_cast<int>(row), static_cast<int>(first), static_cast<int>(last + 1)});
-        }
+        if (first <= last) visit({static_cast<int>(row), static_cast<int>(first), static_cast<int>(last + 1)});
     }
-    return std::max<std::int64_t>(0, last_row - first_row + 1);
+    return last_row - first_row + 1;
 }
 
 std::int64_t fill_convex(Framebuffer& framebuffer, std::span<const SubpixelPoint> corners,

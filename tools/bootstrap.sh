@@ -1,18 +1,23 @@
 #!/usr/bin/env bash
-# Sets raster up on Debian 12 from nothing: installs missing packages, builds in Release, then
-# runs the main job (`run`) or the whole test suite (`test`).
+# Sets raster up on Debian 12 from nothing: installs missing packages, builds, then runs one job.
 set -euo pipefail
 
 usage() {
-    echo "usage: tools/bootstrap.sh run [OUTPUT.webp]   # render the tumbling cube (default out/animated-cube.webp)"
-    echo "       tools/bootstrap.sh test                # run every test"
+    cat <<'TXT'
+usage: tools/bootstrap.sh COMMAND
+  run [OUTPUT.webp]  build in Release and render the tumbling cube (default out/animated-cube.webp)
+  test               build in Release and run every test
+  sanitize           build with AddressSanitizer and UndefinedBehaviorSanitizer and run every test
+  fuzz [SECONDS]     build the libFuzzer target with clang and fuzz fill and line (default 60 s)
+  lab                measure every raster method and redraw the charts in doc/lab/
+TXT
 }
 
-packages=(cmake g++ make pkg-config libglm-dev libwebp-dev libcli11-dev libgtest-dev webp)
+base_packages=(cmake g++ make pkg-config libglm-dev libwebp-dev libcli11-dev libgtest-dev libbenchmark-dev webp)
 
 install_missing() {
     local missing=()
-    for package in "${packages[@]}"; do
+    for package in "$@"; do
         dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" ||
             missing+=("$package")
     done
@@ -25,23 +30,40 @@ install_missing() {
 }
 
 build() {
-    cmake --preset release
-    cmake --build --preset release -j "$(nproc)"
+    cmake --preset "$1"
+    cmake --build --preset "$1" -j "$(nproc)"
 }
 
 cd "$(dirname "$0")/.."
 case "${1:-}" in
 run)
     output="${2:-out/animated-cube.webp}"
-    install_missing
-    build
+    install_missing "${base_packages[@]}"
+    build release
     mkdir -p "$(dirname "$output")"
     build/release/bin/animated-cube "$output"
     ;;
 test)
-    install_missing
-    build
+    install_missing "${base_packages[@]}"
+    build release
     ctest --preset release
+    ;;
+sanitize)
+    install_missing "${base_packages[@]}"
+    build asan
+    ctest --preset asan
+    ;;
+fuzz)
+    seconds="${2:-60}"
+    install_missing "${base_packages[@]}" clang libclang-rt-14-dev
+    build fuzz
+    mkdir -p build/fuzz/corpus
+    build/fuzz/lab/fuzz_raster -max_total_time="$seconds" -print_final_stats=1 build/fuzz/corpus
+    ;;
+lab)
+    install_missing "${base_packages[@]}" gnuplot-nox
+    build release
+    cmake --build --preset release --target lab
     ;;
 *)
     usage >&2
