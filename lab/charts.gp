@@ -11,9 +11,9 @@ shown(e) = e < floor ? floor : e
 
 do for [kind in "fill line"] {
     set output sprintf("%s/%s.svg", dir, kind)
-    set title sprintf("%s: speed against accuracy (%s)", kind eq "fill" ? "Convex fills" : "Lines", \
-        kind eq "fill" ? "triangles of 1 to 500 px" : "segments of 1 to 1000 px") font ",14"
-    set xlabel "speed: million pixels per second (geometric mean over size classes, higher is better)"
+    set title sprintf("%s: speed against accuracy", kind eq "fill" ? "Convex fills" : "Lines") font ",14"
+    set xlabel sprintf("speed: million pixels per second drawing the %s of the 360-frame tumbling cube (higher is better)", \
+        kind eq "fill" ? "front faces" : "culled edges")
     set ylabel "coverage mismatches per million pixels vs the exact reference (lower is better)"
     set logscale xy
     set ytics add ("0 (exact)" floor)
@@ -22,7 +22,7 @@ do for [kind in "fill line"] {
     # Labels of exact methods would pile up on the floor: stack them upward, joined to their points.
     k = 0
     label_y(e) = e < floor ? (k = k + 1, floor * 2.2**k) : e
-    plot sprintf("%s/%s-pareto.csv", dir, kind) using 4:(shown($5)) every ::1 with lines lw 2 lc "#999999" dt 2 title "Pareto front", \
+    plot sprintf("%s/%s-pareto.csv", dir, kind) using 4:(shown($5)) every ::1 with linespoints lw 2 lc "#999999" dt 2 pt 6 ps 3.2 title "Pareto front", \
          file using 4:(shown($5)) every ::1 with points pt 7 ps 1.3 lc "#3366cc" title "method", \
          file using 4:($3 == 1 ? shown($5) : 1/0) every ::1 with points pt 5 ps 2.2 lc "#d62728" title "product default", \
          (k = 0, file) using 4:(shown($5)):(0):(label_y($5) - shown($5)) every ::1 with vectors nohead lc "#bbbbbb" notitle, \
@@ -41,7 +41,7 @@ set key outside right
 set offsets 0, 0, 0, 0
 fills = "seed-bbox-float edge-float edge-fixed4 edge-fixed8 blocked-fixed8 scanline-float span-exact8"
 lines = "seed-float-dda bresenham integer-dda"
-plot for [m in fills] sprintf("%s/speed.csv", dir) using 2:(strcol(1) eq m ? $4 : 1/0) every ::1 \
+plot for [m in fills] sprintf("%s/speed.csv", dir) using 2:(strcol(1) eq m && $2 > 0 ? $4 : 1/0) every ::1 \
         with linespoints lw (m eq "span-exact8" ? 3 : 1) title "fill ".m, \
-     for [m in lines] sprintf("%s/speed.csv", dir) using 2:(strcol(1) eq m ? $4 : 1/0) every ::1 \
+     for [m in lines] sprintf("%s/speed.csv", dir) using 2:(strcol(1) eq m && $2 > 0 ? $4 : 1/0) every ::1 \
         with linespoints dt 2 lw (m eq "integer-dda" ? 3 : 1) title "line ".m

@@ -1,5 +1,5 @@
 // raster-lab: measures every raster method's accuracy against the exact reference and its speed,
-// then writes CSV tables for the charts in doc/lab/.
+// then writes the CSV tables and summary.md that doc/lab/ shows.
 #include "corpus.hpp"
 #include "measures.hpp"
 #include "speed.hpp"
@@ -9,65 +9,114 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
-#include <map>
+#include <sstream>
+#include <thread>
 #include <vector>
 
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Summary {
+struct Row {
     std::string id;
     std::string label;
-    bool is_product;
-    double speed;  // geometric mean of pixels per second over the size classes
-    double error;  // the chart's error axis
+    bool is_product = false;
+    double speed = 0.0;  // million pixels per second on the tumbling-cube scene: the chart's speed axis
+    double error = 0.0;  // mismatches per million reference pixels: the chart's error axis
+    std::vector<std::string> details;  // further columns of the summary table
     bool pareto = false;
 };
 
-double geometric_mean_pixels(const std::vector<lab::SpeedResult>& speeds, std::string_view method) {
+double scene_mpixels(const std::vector<lab::SpeedResult>& speeds, std::string_view method) {
+    for (const lab::SpeedResult& s : speeds) {
+        if (s.method == method && s.size == 0) return s.pixels_per_second / 1e6;
+    }
+    return 0.0;
+}
+
+double geometric_mean_mpixels(const std::vector<lab::SpeedResult>& speeds, std::string_view method) {
     double log_sum = 0.0;
     int count = 0;
     for (const lab::SpeedResult& s : speeds) {
-        if (s.method != method) continue;
-        log_sum += std::log(s.pixels_per_second);
+        if (s.method != method || s.size == 0) continue;
+        log_sum += std::log(s.pixels_per_second / 1e6);
         ++count;
     }
     return count == 0 ? 0.0 : std::exp(log_sum / count);
 }
 
+std::string fixed(double value, int decimals) {
+    std::ostringstream text;
+    text << std::fixed << std::setprecision(decimals) << value;
+    return text.str();
+}
+
 // A method is on the front when no other is at least as fast and as accurate, and better in one.
-void mark_pareto(std::vector<Summary>& methods) {
-    for (Summary& m : methods) {
-        m.pareto = std::none_of(methods.begin(), methods.end(), [&m](const Summary& o) {
+void rank(std::vector<Row>& rows) {
+    for (Row& m : rows) {
+        m.pareto = std::none_of(rows.begin(), rows.end(), [&m](const Row& o) {
             return o.speed >= m.speed && o.error <= m.error && (o.speed > m.speed || o.error < m.error);
         });
     }
+    std::sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.speed > b.speed; });
 }
 
-// Writes <name>.csv with every method and <name>-pareto.csv with the front, fastest first.
-void write_summary(const fs::path& directory, const std::string& name, std::vector<Summary> methods,
-                   const std::string& error_name) {
-    std::sort(methods.begin(), methods.end(), [](const Summary& a, const Summary& b) { return a.speed > b.speed; });
+// <name>.csv holds every method and <name>-pareto.csv the front, fastest first, for the charts.
+void write_chart_tables(const fs::path& directory, const std::string& name, const std::vector<Row>& rows) {
     std::ofstream all(directory / (name + ".csv"));
     std::ofstream front(directory / (name + "-pareto.csv"));
-    for (std::ofstream* out : {&all, &front}) *out << "method,label,product,mpixels_per_s," << error_name << ",pareto\n";
-    for (const Summary& m : methods) {
+    for (std::ofstream* out : {&all, &front}) *out << "method,label,product,mpixels_per_s,mismatches_per_million,pareto\n";
+    for (const Row& m : rows) {
         for (std::ofstream* out : {&all, &front}) {
             if (out == &front && !m.pareto) continue;
-            *out << m.id << "," << m.label << "," << m.is_product << "," << m.speed / 1e6 << "," << m.error << ","
-                 << m.pareto << "\n";
+            *out << m.id << "," << m.label << "," << m.is_product << "," << m.speed << "," << m.error << "," << m.pareto << "\n";
         }
     }
 }
 
-std::vector<Summary> measure_fills(const fs::path& out, const std::vector<lab::SpeedResult>& speeds) {
+void write_markdown_table(std::ostream& out, const std::vector<std::string>& header, const std::vector<Row>& rows) {
+    out << "| method | Mpixels/s on the tumbling cube | mismatches per million |";
+    for (const std::string& h : header) out << " " << h << " |";
+    out << " Pareto front |\n|---|---|---|";
+    for (std::size_t i = 0; i < header.size(); ++i) out << "---|";
+    out << "---|\n";
+    for (const Row& m : rows) {
+        out << "| " << m.label << " (`" << m.id << "`) | " << fixed(m.speed, 1) << " | " << fixed(m.error, 1) << " |";
+        for (const std::string& d : m.details) out << " " << d << " |";
+        out << " " << (m.pareto ? "yes" : "no") << " |\n";
+    }
+}
+
+void write_speed_table(std::ostream& out, const std::vector<lab::SpeedResult>& speeds, const std::vector<Row>& rows,
+                       std::span<const int> sizes, const std::string& size_name) {
+    out << "| " << size_name << " |";
+    for (const Row& m : rows) out << " `" << m.id << "` |";
+    out << " fastest |\n|---|";
+    for (std::size_t i = 0; i < rows.size(); ++i) out << "---|";
+    out << "---|\n";
+    for (const int size : sizes) {
+        out << "| " << size << " |";
+        std::string fastest;
+        double best = 0.0;
+        for (const Row& m : rows) {
+            for (const lab::SpeedResult& s : speeds) {
+                if (s.method != m.id || s.size != size) continue;
+                out << " " << fixed(s.pixels_per_second / 1e6, 1) << " |";
+                if (s.pixels_per_second > best) best = s.pixels_per_second, fastest = m.id;
+            }
+        }
+        out << " `" << fastest << "` |\n";
+    }
+}
+
+std::vector<Row> measure_fills(const fs::path& out, const std::vector<lab::SpeedResult>& speeds) {
     std::ofstream table(out / "fill-accuracy.csv");
     table << "method,case,reference_pixels,mismatches,cracks,double_hits\n";
     const auto polygons = lab::polygon_corpora();
     const auto meshes = lab::mesh_cases();
-    std::vector<Summary> summaries;
+    std::vector<Row> rows;
     for (const lab::FillMethod& method : lab::fill_methods()) {
         lab::FillAccuracy total;
         const auto add = [&](const std::string& name, const lab::FillAccuracy& a) {
@@ -82,24 +131,25 @@ std::vector<Summary> measure_fills(const fs::path& out, const std::vector<lab::S
         for (const auto& mesh : meshes) add(mesh.name, lab::measure_mesh(method, mesh));
         double motion = 0.0;
         for (const std::int64_t offset : lab::kOffsets) motion = std::max(motion, lab::measure_motion(method, offset));
-        table << method.id << ",motion-max-px," << motion << ",,,\n";
         const double ppm = 1e6 * static_cast<double>(total.mismatches) / static_cast<double>(total.reference_pixels);
-        std::cout << method.id << ": " << ppm << " mismatches per million, " << total.cracks << " cracks, "
-                  << total.double_hits << " double hits, motion " << motion << " px\n";
-        summaries.push_back({std::string(method.id), std::string(method.label), method.is_product,
-                             geometric_mean_pixels(speeds, method.id), ppm});
+        rows.push_back({std::string(method.id), std::string(method.label), method.is_product,
+                        scene_mpixels(speeds, method.id), ppm,
+                        {fixed(geometric_mean_mpixels(speeds, method.id), 1), std::to_string(total.cracks),
+                         std::to_string(total.double_hits),
+                         std::isfinite(motion) ? fixed(motion, 3) : "lost the triangle"}});
     }
-    mark_pareto(summaries);
-    write_summary(out, "fill", summaries, "mismatches_per_million");
-    return summaries;
+    rank(rows);
+    write_chart_tables(out, "fill", rows);
+    return rows;
 }
 
-std::vector<Summary> measure_lines(const fs::path& out, const std::vector<lab::SpeedResult>& speeds) {
+std::vector<Row> measure_lines(const fs::path& out, const std::vector<lab::SpeedResult>& speeds) {
     std::ofstream table(out / "line-accuracy.csv");
     table << "method,case,reference_pixels,mismatches,max_distance,outside_3x3,count_difference,max_count_difference,steps\n";
-    std::vector<Summary> summaries;
+    std::vector<Row> rows;
     for (const lab::LineMethod& method : lab::line_methods()) {
-        std::int64_t reference = 0, mismatches = 0;
+        std::int64_t reference = 0, mismatches = 0, outside = 0, count_difference = 0;
+        double distance = 0.0;
         for (const auto& corpus : lab::segment_corpora()) {
             const lab::LineAccuracy a = lab::measure_segments(method, corpus);
             table << method.id << "," << corpus.name << "," << a.reference_pixels << "," << a.mismatches << ","
@@ -107,23 +157,27 @@ std::vector<Summary> measure_lines(const fs::path& out, const std::vector<lab::S
                   << a.max_count_difference << "," << a.steps << "\n";
             reference += a.reference_pixels;
             mismatches += a.mismatches;
+            outside += a.outside_neighbourhood;
+            count_difference = std::max(count_difference, a.max_count_difference);
+            distance = std::max(distance, a.max_distance);
         }
         const double ppm = 1e6 * static_cast<double>(mismatches) / static_cast<double>(reference);
-        std::cout << method.id << ": " << ppm << " mismatches per million\n";
-        summaries.push_back({std::string(method.id), std::string(method.label), method.is_product,
-                             geometric_mean_pixels(speeds, method.id), ppm});
+        rows.push_back({std::string(method.id), std::string(method.label), method.is_product,
+                        scene_mpixels(speeds, method.id), ppm,
+                        {fixed(geometric_mean_mpixels(speeds, method.id), 1), fixed(distance, 3), std::to_string(outside), std::to_string(count_difference)}});
     }
-    mark_pareto(summaries);
-    write_summary(out, "line", summaries, "mismatches_per_million");
-    return summaries;
+    rank(rows);
+    write_chart_tables(out, "line", rows);
+    return rows;
 }
 
-void write_speeds(const fs::path& out, const std::vector<lab::SpeedResult>& speeds) {
-    std::ofstream table(out / "speed.csv");
-    table << "method,size,primitives_per_s,mpixels_per_s\n";
-    for (const lab::SpeedResult& s : speeds) {
-        table << s.method << "," << s.size << "," << s.primitives_per_second << "," << s.pixels_per_second / 1e6 << "\n";
+std::string machine() {
+    std::ifstream cpuinfo("/proc/cpuinfo");
+    std::string line;
+    while (std::getline(cpuinfo, line)) {
+        if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
     }
+    return "unknown CPU";
 }
 
 }  // namespace
@@ -138,8 +192,30 @@ int main(int argc, char** argv) {
     fs::create_directories(out);
     int passed_count = static_cast<int>(passed.size());
     const std::vector<lab::SpeedResult> speeds = lab::measure_speed(passed_count, passed.data());
-    write_speeds(out, speeds);
-    measure_fills(out, speeds);
-    measure_lines(out, speeds);
-    std::cout << "raster-lab: wrote CSV tables to " << out.string() << "\n";
+    {
+        std::ofstream table(out / "speed.csv");
+        table << "method,size,primitives_per_s,mpixels_per_s\n";
+        for (const lab::SpeedResult& s : speeds) {
+            table << s.method << "," << s.size << "," << s.primitives_per_second << "," << s.pixels_per_second / 1e6 << "\n";
+        }
+    }
+    const std::vector<Row> fills = measure_fills(out, speeds);
+    const std::vector<Row> lines = measure_lines(out, speeds);
+
+    std::ofstream summary(out / "summary.md");
+    summary << "# Lab results\n\nWritten by `raster-lab` on " << machine() << " (" << std::thread::hardware_concurrency()
+            << " cores). Speeds are medians of repeated Google Benchmark runs; the speed that decides the "
+               "Pareto front is measured on the product's own scene, the front faces (fills) or culled edges "
+               "(lines) of all 360 tumbling-cube frames at 800x600. Every figure comes from the CSV tables "
+               "beside this file.\n\n## Convex fills\n\n";
+    write_markdown_table(summary, {"Mpixels/s, geometric mean over sizes", "cracks", "double hits",
+                                   "motion: worst centroid error (px)"}, fills);
+    summary << "\nMillion pixels per second by triangle size (px):\n\n";
+    write_speed_table(summary, speeds, fills, lab::kTriangleSizes, "size");
+    summary << "\n## Lines\n\n";
+    write_markdown_table(summary, {"Mpixels/s, geometric mean over lengths", "farthest pixel from the segment (px)", "pixels outside the reference's 3x3",
+                                   "worst pixel-count difference"}, lines);
+    summary << "\nMillion pixels per second by segment length (px):\n\n";
+    write_speed_table(summary, speeds, lines, lab::kLineLengths, "length");
+    std::cout << "raster-lab: wrote " << (out / "summary.md").string() << " and its CSV tables\n";
 }

@@ -11,8 +11,8 @@ namespace lab {
 
 struct SpeedResult {
     std::string method;
-    int size;                  // triangle size or line length, in pixels
-    double primitives_per_second;
+    int size;                  // triangle size or line length in pixels; 0 for the tumbling-cube scene
+    double primitives_per_second;  // frames per second for the scene
     double pixels_per_second;  // pixels the reference covers, per second
 };
 

@@ -7,10 +7,17 @@
 namespace raster {
 namespace {
 
-// floor(n / d) for d > 0.
+// floor(n / d) for d > 0. Operands that fit 32 bits, the common case for small polygons, take
+// the 32-bit divide, which is several times faster than the 64-bit one on x86-64.
 std::int64_t floor_div(std::int64_t n, std::int64_t d) {
+    if (n == static_cast<std::int32_t>(n) && d == static_cast<std::int32_t>(d)) {
+        const auto n32 = static_cast<std::int32_t>(n);
+        const auto d32 = static_cast<std::int32_t>(d);
+        const std::int32_t q = n32 / d32;
+        return (q * d32 != n32 && n32 < 0) ? q - 1 : q;
+    }
     const std::int64_t q = n / d;
-    return (n % d != 0 && n < 0) ? q - 1 : q;
+    return (q * d != n && n < 0) ? q - 1 : q;
 }
 
 // The first and last pixel whose centre lies in [low, high] (subpixel units); an arithmetic
@@ -35,65 +42,19 @@ struct EdgeFunction {
     }
 };
 
-// One edge's limit on the span of successive rows. The limit is floor(numerator / divisor); it is
-// kept as quotient and remainder, so after one division at the first row each row costs two
-// additions and stays exact.
-class EdgeWalker {
-public:
-    enum class Kind { left, right, row };  // limits the first column, the last, or the whole row
-
-    EdgeWalker() = default;
-    // With `stepping` off the walker serves one row only and skips the second division.
-    EdgeWalker(const EdgeFunction& edge, std::int64_t row, bool stepping) {
-        // Inside means step_x * i >= need(row), and need falls by step_y from row to row.
-        const std::int64_t need = edge.bias - (edge.step_y * row + edge.offset);
-        std::int64_t numerator = need;
-        std::int64_t change = -edge.step_y;
-        if (edge.step_x > 0) {  // first column: ceil(need / step_x)
-            kind_ = Kind::left;
-            divisor_ = edge.step_x;
-            numerator += divisor_ - 1;
-        } else if (edge.step_x < 0) {  // last column: floor(-need / -step_x)
-            kind_ = Kind::right;
-            divisor_ = -edge.step_x;
-            numerator = -need;
-            change = edge.step_y;
-        } else {  // a horizontal edge admits the whole row while need <= 0
-            kind_ = Kind::row;
-            divisor_ = 1;
-        }
-        quotient_ = floor_div(numerator, divisor_);
-        remainder_ = numerator - quotient_ * divisor_;
-        if (!stepping) return;
-        quotient_step_ = floor_div(change, divisor_);
-        remainder_step_ = change - quotient_step_ * divisor_;
+// Narrows [first, last] to the columns of `row` inside one edge: step_x * i >= need. Solving
+// with one exact division per edge and row measured faster than stepping quotient and remainder
+// from row to row (doc/lab/README.md).
+void clamp_to_edge(const EdgeFunction& edge, std::int64_t row, std::int64_t& first, std::int64_t& last) {
+    const std::int64_t need = edge.bias - (edge.step_y * row + edge.offset);
+    if (edge.step_x > 0) {
+        first = std::max(first, -floor_div(-need, edge.step_x));
+    } else if (edge.step_x < 0) {
+        last = std::min(last, floor_div(-need, -edge.step_x));
+    } else if (need > 0) {
+        last = first - 1;  // a horizontal edge with the whole row outside it
     }
-
-    void clamp(std::int64_t& first, std::int64_t& last) const {
-        switch (kind_) {
-        case Kind::left: first = std::max(first, quotient_); break;
-        case Kind::right: last = std::min(last, quotient_); break;
-        case Kind::row: if (quotient_ > 0) last = first - 1; break;
-        }
-    }
-
-    void next_row() {
-        quotient_ += quotient_step_;
-        remainder_ += remainder_step_;
-        if (remainder_ >= divisor_) {
-            remainder_ -= divisor_;
-            ++quotient_;
-        }
-    }
-
-private:
-    Kind kind_ = Kind::row;
-    std::int64_t divisor_ = 1;
-    std::int64_t quotient_ = 0;
-    std::int64_t remainder_ = 0;
-    std::int64_t quotient_step_ = 0;
-    std::int64_t remainder_step_ = 0;
-};
+}
 
 constexpr std::size_t kMaxCorners = 8;
 
@@ -130,21 +91,17 @@ std::int64_t rasterize_convex(std::span<const SubpixelPoint> corners, PixelRect 
     const std::int64_t area = twice_signed_area(corners);
     if (area == 0) return 0;
 
-    std::array<EdgeWalker, kMaxCorners> walkers{};
-    const bool several_rows = last_row > first_row;
+    std::array<EdgeFunction, kMaxCorners> edges{};
     for (std::size_t i = 0; i < count; ++i) {
         SubpixelPoint a = corners[i];
         SubpixelPoint b = corners[(i + 1) % count];
         if (area < 0) std::swap(a, b);  // walk every polygon in the same rotational sense
-        walkers[i] = EdgeWalker(EdgeFunction::through(a, b), first_row, several_rows);
+        edges[i] = EdgeFunction::through(a, b);
     }
     for (std::int64_t row = first_row; row <= last_row; ++row) {
         std::int64_t first = clip.x;
         std::int64_t last = std::int64_t{clip.x} + clip.width - 1;
-        for (std::size_t i = 0; i < count; ++i) {
-            walkers[i].clamp(first, last);
-            walkers[i].next_row();
-        }
+        for (std::size_t i = 0; i < count; ++i) clamp_to_edge(edges[i], row, first, last);
         if (first <= last) visit({static_cast<int>(row), static_cast<int>(first), static_cast<int>(last + 1)});
     }
     return last_row - first_row + 1;

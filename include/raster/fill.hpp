@@ -49,9 +49,8 @@ struct PixelRect {
 // Visits, row by row, the pixels of `clip` whose centres a convex polygon covers: inside every
 // edge, or on an edge that is a top or left edge (doc/conventions.md#fill). Either winding works;
 // zero area covers nothing, nor do polygons with more than 8 corners or corners beyond
-// kMaxSubpixelCoordinate. Each row's span comes from exact 64-bit edge functions solved for x
-// and walked from row to row, so the work is one step per row of the clipped bounding box.
-// Returns the rows examined.
+// kMaxSubpixelCoordinate. Each row's span comes from exact 64-bit edge functions solved for x,
+// so the work is one step per row of the clipped bounding box. Returns the rows examined.
 std::int64_t rasterize_convex(std::span<const SubpixelPoint> corners, PixelRect clip, SpanVisitor visit);
 
 // Paints the covered pixels; the framebuffer's top-left pixel sits at `origin`.
