@@ -26,7 +26,8 @@ do for [kind in "fill line"] {
          file using 4:(shown($5)) every ::1 with points pt 7 ps 1.3 lc "#3366cc" title "method", \
          file using 4:($3 == 1 ? shown($5) : 1/0) every ::1 with points pt 5 ps 2.2 lc "#d62728" title "product default", \
          (k = 0, file) using 4:(shown($5)):(0):(label_y($5) - shown($5)) every ::1 with vectors nohead lc "#bbbbbb" notitle, \
-         (k = 0, file) using 4:(label_y($5)):2 every ::1 with labels offset char 1, char 0 left font ",10" notitle
+         (k = 0, file) using 4:(label_y($5)):($5 < floor ? stringcolumn(2) : "") every ::1 with labels offset char 1, char 0 left font ",10" notitle, \
+         file using 4:(shown($5)):($5 < floor ? "" : stringcolumn(2)) every ::1 with labels offset char 0, char 1.2 center font ",10" notitle
     unset ytics
     set ytics
     unset logscale

@@ -1,0 +1,17 @@
+// render-frames: renders the 360 tumbling-cube frames in memory, without encoding, for profilers
+// (valgrind --tool=callgrind build/release/lab/render-frames). Uses only the API of 0.0.7 onward,
+// so the same file builds against older tags for comparison.
+#include <raster/framebuffer.hpp>
+#include <raster/scenes.hpp>
+
+#include <cstdio>
+
+int main() {
+    raster::Framebuffer frame(raster::kSceneWidth, raster::kSceneHeight);
+    unsigned checksum = 0;
+    for (int i = 0; i < raster::kAnimationFrameCount; ++i) {
+        raster::render_tumble_frame(frame, i, raster::kAnimationFrameCount, raster::CubeStyle::filled);
+        checksum += frame.bytes()[static_cast<std::size_t>(i) * 997U % frame.bytes().size()];
+    }
+    std::printf("rendered %d frames (checksum %u)\n", raster::kAnimationFrameCount, checksum);
+}
