@@ -22,19 +22,35 @@ std::optional<std::array<SubpixelPoint, 4>> face_on_screen(const OrthoCamera& ca
 
 }  // namespace
 
-std::vector<std::size_t> faces_toward_camera(const OrthoCamera& camera, const Cube& cube) {
-    std::vector<std::size_t> slots;
+namespace {
+
+struct FaceOnScreen {
+    std::size_t slot;
+    std::array<SubpixelPoint, 4> corners;
+};
+
+// The faces toward the camera with their snapped corners, which culling and filling share.
+std::vector<FaceOnScreen> faces_on_screen(const OrthoCamera& camera, const Cube& cube) {
+    std::vector<FaceOnScreen> faces;
     for (std::size_t slot = 0; slot < cube.faces().size(); ++slot) {
         const auto corners = face_on_screen(camera, cube, cube.faces()[slot]);
-        if (corners && twice_signed_area(*corners) > 0) slots.push_back(slot);
+        if (corners && twice_signed_area(*corners) > 0) faces.push_back({slot, *corners});
     }
+    return faces;
+}
+
+}  // namespace
+
+std::vector<std::size_t> faces_toward_camera(const OrthoCamera& camera, const Cube& cube) {
+    std::vector<std::size_t> slots;
+    for (const FaceOnScreen& face : faces_on_screen(camera, cube)) slots.push_back(face.slot);
     return slots;
 }
 
 void draw_faces(Framebuffer& framebuffer, const OrthoCamera& camera, const Cube& cube,
                 const std::array<Rgb, 6>& palette) {
-    for (const std::size_t slot : faces_toward_camera(camera, cube)) {
-        fill_convex(framebuffer, *face_on_screen(camera, cube, cube.faces()[slot]), palette[slot]);
+    for (const FaceOnScreen& face : faces_on_screen(camera, cube)) {
+        fill_convex(framebuffer, face.corners, palette[face.slot]);
     }
 }
 

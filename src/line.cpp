@@ -102,12 +102,16 @@ std::int64_t draw_line(Framebuffer& framebuffer, glm::ivec2 from, glm::ivec2 to,
                                   : visible_samples(walk, major_size, minor_size);
     if (range.first > range.last) return 0;
 
-    // Step the minor coordinate as quotient + remainder of (2 * delta * i + N) / 2N.
+    // Step the minor coordinate as quotient + remainder of (2 * delta * i + N) / 2N; at i = 0 they
+    // are minor_start and N, so most lines need no 128-bit division.
     const std::int64_t denominator = 2 * steps;
-    const Wide numerator = Wide{2} * walk.minor_delta * range.first + steps;
-    const std::int64_t first_minor = walk.minor_at(range.first);
-    const auto first_remainder =
-        static_cast<std::int64_t>(numerator - Wide{first_minor - walk.minor_start} * denominator);
+    std::int64_t first_minor = walk.minor_start;
+    std::int64_t first_remainder = steps;
+    if (range.first > 0) {
+        first_minor = walk.minor_at(range.first);
+        first_remainder = static_cast<std::int64_t>(Wide{2} * walk.minor_delta * range.first + steps -
+                                                    Wide{first_minor - walk.minor_start} * denominator);
+    }
     const auto step_through = [&](auto plot) {
         std::int64_t major = walk.major_at(range.first);
         std::int64_t minor = first_minor;
