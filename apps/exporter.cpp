@@ -59,7 +59,10 @@ int run_exporter(CLI::App& app, int argc, char** argv,
     }
 }
 
-std::string describe_still(const ExportOptions& options, std::uintmax_t bytes) {
+std::string export_still(const ExportOptions& options, const std::function<void(raster::Framebuffer&)>& render) {
+    raster::Framebuffer frame(options.width, options.height);
+    render(frame);
+    const std::uintmax_t bytes = raster::write_webp_still(frame, options.output, options.effort);
     return "Wrote " + options.output.string() + ": " + std::to_string(options.width) + "x" +
            std::to_string(options.height) + " still, " + std::to_string(bytes) + " bytes";
 }

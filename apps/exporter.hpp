@@ -25,8 +25,9 @@ void add_style_option(CLI::App& app, raster::CubeStyle& style, const std::string
 int run_exporter(CLI::App& app, int argc, char** argv,
                  const std::function<std::string()>& export_file);
 
-// "Wrote out.webp: 800x600 still, 4211 bytes"
-std::string describe_still(const ExportOptions& options, std::uintmax_t bytes);
+// Renders one frame of the chosen size, writes it as a still and returns the line to report:
+// "Wrote out.webp: 800x600 still, 4211 bytes".
+std::string export_still(const ExportOptions& options, const std::function<void(raster::Framebuffer&)>& render);
 // "Wrote out.webp: 800x600, 360 frames, 7200 ms, 205874 bytes"
 std::string describe_animation(const ExportOptions& options, int frames, int duration_ms,
                                std::uintmax_t bytes);

@@ -12,8 +12,6 @@ int main(int argc, char** argv) {
     add_style_option(app, style, "white");
 
     return run_exporter(app, argc, argv, [&] {
-        raster::Framebuffer frame(options.width, options.height);
-        raster::render_still_cube(frame, style);
-        return describe_still(options, raster::write_webp_still(frame, options.output, options.effort));
+        return export_still(options, [&](raster::Framebuffer& frame) { raster::render_still_cube(frame, style); });
     });
 }

@@ -9,9 +9,5 @@ int main(int argc, char** argv) {
     ExportOptions options{"still-unit-cube.webp"};
     add_export_options(app, options);
 
-    return run_exporter(app, argc, argv, [&] {
-        raster::Framebuffer frame(options.width, options.height);
-        raster::render_unit_cube(frame);
-        return describe_still(options, raster::write_webp_still(frame, options.output, options.effort));
-    });
+    return run_exporter(app, argc, argv, [&] { return export_still(options, raster::render_unit_cube); });
 }

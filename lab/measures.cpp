@@ -20,6 +20,17 @@ void for_each_pixel(const PixelRect& rect, Visit visit) {
     }
 }
 
+// How many pixels of the 3x3 block around (x, y) lie in the rectangle and are covered.
+int covered_around(const Coverage& coverage, std::int64_t x, std::int64_t y) {
+    int covered = 0;
+    for (std::int64_t dy = -1; dy <= 1; ++dy) {
+        for (std::int64_t dx = -1; dx <= 1; ++dx) {
+            covered += coverage.contains(x + dx, y + dy) && coverage.at(x + dx, y + dy) != 0;
+        }
+    }
+    return covered;
+}
+
 double distance_to_segment(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b) {
     const glm::dvec2 ab = b - a;
     const double length2 = ab.x * ab.x + ab.y * ab.y;
@@ -55,19 +66,11 @@ FillAccuracy measure_mesh(const FillMethod& method, const MeshCase& mesh) {
         reference_polygon(triangle, expected);
         method.fill(on_screen(triangle), actual);
     }
-    const auto well_inside = [&](std::int64_t x, std::int64_t y) {
-        for (std::int64_t dy = -1; dy <= 1; ++dy) {
-            for (std::int64_t dx = -1; dx <= 1; ++dx) {
-                if (!expected.contains(x + dx, y + dy) || expected.at(x + dx, y + dy) == 0) return false;
-            }
-        }
-        return true;
-    };
     for_each_pixel(mesh.window, [&](std::int64_t x, std::int64_t y) {
         result.reference_pixels += expected.at(x, y);
         result.mismatches += expected.at(x, y) != actual.at(x, y);
         result.double_hits += actual.at(x, y) > 1;
-        result.cracks += actual.at(x, y) == 0 && well_inside(x, y);
+        result.cracks += actual.at(x, y) == 0 && covered_around(expected, x, y) == 9;
     });
     return result;
 }
@@ -123,12 +126,7 @@ LineAccuracy measure_segments(const LineMethod& method, const SegmentCorpus& cor
             result.mismatches += lit != ideal;
             if (!lit) return;
             result.max_distance = std::max(result.max_distance, distance_to_segment(glm::dvec2(static_cast<double>(x), static_cast<double>(y)), glm::dvec2(from), glm::dvec2(to)));
-            bool near = false;
-            for (std::int64_t dy = -1; dy <= 1 && !near; ++dy) {
-                for (std::int64_t dx = -1; dx <= 1 && !near; ++dx) {
-                    near = expected.contains(x + dx, y + dy) && expected.at(x + dx, y + dy) != 0;
-                }
-            }
+            const bool near = covered_around(expected, x, y) > 0;
             // A neighbour outside the window may be the reference pixel; only judge inner pixels.
             const bool inner = x > w.x && y > w.y && x < w.x + w.width - 1 && y < w.y + w.height - 1;
             result.outside_neighbourhood += !near && inner;

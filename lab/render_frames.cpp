@@ -8,10 +8,8 @@
 
 int main() {
     raster::Framebuffer frame(raster::kSceneWidth, raster::kSceneHeight);
-    unsigned checksum = 0;
     for (int i = 0; i < raster::kAnimationFrameCount; ++i) {
         raster::render_tumble_frame(frame, i, raster::kAnimationFrameCount, raster::CubeStyle::filled);
-        checksum += frame.bytes()[static_cast<std::size_t>(i) * 997U % frame.bytes().size()];
     }
-    std::printf("rendered %d frames (checksum %u)\n", raster::kAnimationFrameCount, checksum);
+    std::printf("rendered %d frames\n", raster::kAnimationFrameCount);
 }

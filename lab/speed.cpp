@@ -16,6 +16,12 @@ namespace {
 constexpr int kBatch = 64;  // primitives per benchmark iteration
 constexpr PixelRect kTarget{0, 0, 1024, 1024};
 
+// Primitives and pixels drawn per second, from the counts of one iteration.
+void report_rates(benchmark::State& state, double primitives, double pixels) {
+    state.counters["primitives"] = benchmark::Counter(primitives, benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["pixels"] = benchmark::Counter(pixels, benchmark::Counter::kIsIterationInvariantRate);
+}
+
 std::string key(std::string_view kind, std::string_view method, int size) {
     return std::string(kind) + "/" + std::string(method) + "/" + std::to_string(size);
 }
@@ -62,8 +68,7 @@ void register_fills(Collector& collector) {
                     for (const auto& corners : *triangles) method.fill(corners, target);
                     benchmark::ClobberMemory();
                 }
-                state.counters["primitives"] = benchmark::Counter(kBatch, benchmark::Counter::kIsIterationInvariantRate);
-                state.counters["pixels"] = benchmark::Counter(pixels, benchmark::Counter::kIsIterationInvariantRate);
+                report_rates(state, kBatch, pixels);
             });
         }
     }
@@ -123,8 +128,7 @@ void register_scene(Collector& collector) {
                 for (const auto& corners : scene->faces) method.fill(corners, target);
                 benchmark::ClobberMemory();
             }
-            state.counters["primitives"] = benchmark::Counter(frames, benchmark::Counter::kIsIterationInvariantRate);
-            state.counters["pixels"] = benchmark::Counter(face_pixels, benchmark::Counter::kIsIterationInvariantRate);
+            report_rates(state, frames, face_pixels);
         });
     }
     for (const LineMethod& method : line_methods()) {
@@ -136,8 +140,7 @@ void register_scene(Collector& collector) {
                 for (const auto& [from, to] : scene->edges) method.draw(target, {0, 0}, from, to);
                 benchmark::ClobberMemory();
             }
-            state.counters["primitives"] = benchmark::Counter(frames, benchmark::Counter::kIsIterationInvariantRate);
-            state.counters["pixels"] = benchmark::Counter(edge_pixels, benchmark::Counter::kIsIterationInvariantRate);
+            report_rates(state, frames, edge_pixels);
         });
     }
 }
@@ -161,8 +164,7 @@ void register_lines(Collector& collector) {
                     for (const auto& [from, to] : *segments) method.draw(target, {0, 0}, from, to);
                     benchmark::ClobberMemory();
                 }
-                state.counters["primitives"] = benchmark::Counter(kBatch, benchmark::Counter::kIsIterationInvariantRate);
-                state.counters["pixels"] = benchmark::Counter(pixels, benchmark::Counter::kIsIterationInvariantRate);
+                report_rates(state, kBatch, pixels);
             });
         }
     }

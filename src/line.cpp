@@ -83,8 +83,11 @@ std::int64_t draw_line(Framebuffer& framebuffer, glm::ivec2 from, glm::ivec2 to,
     const std::int64_t dy = std::int64_t{to.y} - from.y;
     const bool x_major = std::abs(dx) >= std::abs(dy);
     const std::int64_t steps = std::max(std::abs(dx), std::abs(dy));
+    const auto inside = [&](std::int64_t x, std::int64_t y) {
+        return x >= 0 && y >= 0 && x < framebuffer.width() && y < framebuffer.height();
+    };
     if (steps == 0) {
-        if (x0 < 0 || y0 < 0 || x0 >= framebuffer.width() || y0 >= framebuffer.height()) return 0;
+        if (!inside(x0, y0)) return 0;
         framebuffer.set_pixel(static_cast<int>(x0), static_cast<int>(y0), colour);
         return 1;
     }
@@ -93,9 +96,6 @@ std::int64_t draw_line(Framebuffer& framebuffer, glm::ivec2 from, glm::ivec2 to,
                                  : DdaWalk{y0, dy > 0 ? 1 : -1, x0, dx, steps};
     const std::int64_t major_size = x_major ? framebuffer.width() : framebuffer.height();
     const std::int64_t minor_size = x_major ? framebuffer.height() : framebuffer.width();
-    const auto inside = [&](std::int64_t x, std::int64_t y) {
-        return x >= 0 && y >= 0 && x < framebuffer.width() && y < framebuffer.height();
-    };
     // With both ends inside, every sample is visible and the search can be skipped.
     const SampleRange range = inside(x0, y0) && inside(x0 + dx, y0 + dy)
                                   ? SampleRange{0, steps}
