@@ -2,56 +2,222 @@
 
 #include <raster/version.hpp>
 
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <charconv>
+#include <cstring>
 #include <exception>
 #include <iostream>
-#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <unistd.h>
+
+namespace {
+
+constexpr std::size_t kHelpWidth = 80;
+constexpr std::size_t kOptionColumn = 30;
+
+// Breaks lines longer than `width` at spaces; shorter lines, such as examples, stay as written.
+std::string wrap(const std::string& text, std::size_t width) {
+    std::string wrapped;
+    std::istringstream lines(text);
+    std::string line;
+    while (std::getline(lines, line)) {
+        if (!wrapped.empty()) wrapped += '\n';
+        while (line.size() > width) {
+            const std::size_t space = line.rfind(' ', width);
+            if (space == std::string::npos || space == 0) break;
+            wrapped += line.substr(0, space) + '\n';
+            line.erase(0, space + 1);
+        }
+        wrapped += line;
+    }
+    return wrapped;
+}
+
+class WrappingFormatter : public CLI::Formatter {
+public:
+    std::string make_option_desc(const CLI::Option* option) const override {
+        return wrap(option->get_description(), kHelpWidth - get_column_width());
+    }
+    std::string make_description(const CLI::App* app) const override {
+        const std::string text = app->get_description();
+        return text.empty() ? "" : wrap(text, kHelpWidth) + "\n\n";
+    }
+    std::string make_footer(const CLI::App* app) const override {
+        const std::string text = app->get_footer();
+        return text.empty() ? "" : wrap(text, kHelpWidth) + "\n";
+    }
+};
+
+bool is_terminal(int descriptor) { return ::isatty(descriptor) == 1; }
+
+}  // namespace
+
+void configure_app(CLI::App& app) {
+    auto formatter = std::make_shared<WrappingFormatter>();
+    formatter->column_width(kOptionColumn);
+    app.formatter(formatter);
+    app.set_version_flag("--version", app.get_name() + " " + raster::kVersion + " (raster)",
+                         "Print the program's name and version, then exit");
+    app.set_help_flag("-h,--help", "Print this help, then exit");
+}
+
+CLI::Option* add_integer_option(CLI::App& app, const std::string& name, int& value, int low, int high,
+                                const std::string& help) {
+    const std::string range = std::to_string(low) + ".." + std::to_string(high);
+    const CLI::Validator decimal_in_range(
+        [low, high, range](std::string& given) -> std::string {
+            long long parsed = 0;
+            const char* end = given.data() + given.size();
+            const auto [stop, error] = std::from_chars(given.data(), end, parsed, 10);
+            if (given.empty() || stop != end || (error != std::errc() && error != std::errc::result_out_of_range)) {
+                return "'" + given + "' is not an integer (expected a decimal number " + range + ")";
+            }
+            if (error == std::errc::result_out_of_range || parsed < low || parsed > high) {
+                return given + " is out of range (expected " + range + ")";
+            }
+            return {};
+        },
+        "", "decimal " + range);
+    return app.add_option(name, value, help)
+        ->check(decimal_in_range)
+        ->option_text("N [" + std::to_string(value) + "]");
+}
+
+CLI::Validator one_of(const std::vector<std::string>& names) {
+    const std::string listed = CLI::detail::join(names, ", ");
+    return {[names, listed](std::string& given) -> std::string {
+                std::string lowered = given;
+                std::transform(lowered.begin(), lowered.end(), lowered.begin(),
+                               [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+                if (std::find(names.begin(), names.end(), lowered) == names.end()) {
+                    return "'" + given + "' is not one of " + listed;
+                }
+                given = lowered;
+                return {};
+            },
+            "", "one of " + listed};
+}
+
+void add_output_options(CLI::App& app, ExportOptions& options) {
+    const std::string output_help = "WebP file to write, replaced whole or not at all; - writes to "
+                                    "standard output. Default: " + options.output;
+    auto* positional = app.add_option("output", options.output, output_help)->option_text("FILE");
+    auto* named = app.add_option("-o,--output", options.output, "The same, as an option")->option_text("FILE");
+    positional->excludes(named);
+    add_choice_option<raster::Effort>(
+        app, "--effort", options.effort,
+        {{"fast", raster::Effort::fast}, {"default", raster::Effort::balanced}, {"max", raster::Effort::max}},
+        "Lossless compression effort: fast (quickest, largest file), default (small file), max "
+        "(smallest, many times slower)",
+        "default");
+    app.add_flag("-q,--quiet", options.quiet, "Print nothing when all goes well");
+    app.add_flag("--progress", options.progress,
+                 "Show progress on stderr even when it is not a terminal (it is shown on a terminal "
+                 "anyway)");
+    app.add_flag("--follow-symlinks", options.policy.follow_symlinks,
+                 "If FILE is a symbolic link, replace the file it points to; without this, links, "
+                 "FIFOs and devices are refused");
+}
 
 void add_export_options(CLI::App& app, ExportOptions& options) {
-    app.set_version_flag("--version", std::string("raster ") + raster::kVersion);
-    app.add_option("output", options.output, "WebP file to write (replaced atomically)")
-        ->capture_default_str();
-    const std::string side_help = "in pixels, 1.." + std::to_string(raster::kMaxImageSide) +
-                                  " (the WebP limit)";
-    app.add_option("--width", options.width, "Image width " + side_help)
-        ->check(CLI::Range(1, raster::kMaxImageSide))
-        ->capture_default_str();
-    app.add_option("--height", options.height, "Image height " + side_help)
-        ->check(CLI::Range(1, raster::kMaxImageSide))
-        ->capture_default_str();
-    const std::map<std::string, raster::Effort> efforts{
-        {"fast", raster::Effort::fast},
-        {"default", raster::Effort::balanced},
-        {"max", raster::Effort::max}};
-    app.add_option("--effort", options.effort,
-                   "Lossless compression effort: fast (quickest, largest file), default "
-                   "(small file), max (smallest, much slower)")
-        ->transform(CLI::CheckedTransformer(efforts, CLI::ignore_case))
-        ->option_text("fast|default|max [default]");
+    configure_app(app);
+    const std::string side = "in pixels, 1.." + std::to_string(raster::kMaxImageSide) + " (the WebP limit)";
+    add_integer_option(app, "--width", options.width, 1, raster::kMaxImageSide, "Image width " + side);
+    add_integer_option(app, "--height", options.height, 1, raster::kMaxImageSide, "Image height " + side);
+    add_output_options(app, options);
 }
 
 void add_style_option(CLI::App& app, raster::CubeStyle& style, const std::string& line_colour) {
-    const std::map<std::string, raster::CubeStyle> styles{
-        {"filled", raster::CubeStyle::filled},
-        {"wireframe", raster::CubeStyle::wireframe},
-        {"culled-wireframe", raster::CubeStyle::culled_wireframe}};
-    app.add_option("--style", style,
-                   "filled: six flat-coloured faces; wireframe: all 12 edges in " + line_colour +
-                       "; culled-wireframe: only edges of faces turned toward the camera")
-        ->transform(CLI::CheckedTransformer(styles, CLI::ignore_case))
-        ->option_text("filled|wireframe|culled-wireframe [filled]");
+    add_choice_option<raster::CubeStyle>(
+        app, "--style", style,
+        {{"filled", raster::CubeStyle::filled},
+         {"wireframe", raster::CubeStyle::wireframe},
+         {"culled-wireframe", raster::CubeStyle::culled_wireframe}},
+        "filled: six flat-coloured faces; wireframe: all 12 edges in " + line_colour +
+            "; culled-wireframe: only the edges of faces turned toward the camera",
+        "filled");
 }
 
-int run_exporter(CLI::App& app, int argc, char** argv,
+Progress::Progress(std::string program, const ExportOptions& options)
+    : program_(std::move(program)), enabled_(options.progress || (!options.quiet && is_terminal(2))),
+      terminal_(is_terminal(2)) {}
+
+Progress::~Progress() {
+    if (line_open_) std::cerr << "\r\033[K" << std::flush;  // leave the terminal as it was
+}
+
+void Progress::frame(int done, int total) {
+    if (!enabled_) return;
+    if (terminal_) {
+        show("frame " + std::to_string(done) + "/" + std::to_string(total));
+        return;
+    }
+    const int tenth = done * 10 / std::max(total, 1);  // a log gets a line per tenth
+    if (tenth != last_tenth_) {
+        last_tenth_ = tenth;
+        show("frame " + std::to_string(done) + "/" + std::to_string(total));
+    }
+}
+
+void Progress::stage(const std::string& what) {
+    if (enabled_) show(what);
+}
+
+void Progress::show(const std::string& text) {
+    if (terminal_) {
+        std::cerr << "\r\033[K" << program_ << ": " << text << std::flush;
+        line_open_ = true;
+    } else {
+        std::cerr << program_ << ": " << text << '\n' << std::flush;
+    }
+}
+
+void check_output(const CLI::App& app, const ExportOptions& options) {
+    if (options.output == "-") {
+        if (is_terminal(1)) {
+            throw std::runtime_error("standard output is a terminal; redirect it to a file or a pipe");
+        }
+        return;
+    }
+    raster::check_output_path(options.output, options.policy);
+    const std::string extension = std::filesystem::path(options.output).extension().string();
+    if (extension != ".webp" && extension != ".WEBP" && !options.quiet) {
+        std::cerr << app.get_name() << ": warning: '" << options.output
+                  << "' does not end in .webp, but it will hold WebP data\n";
+    }
+}
+
+void deliver(const ExportOptions& options, std::span<const std::uint8_t> bytes) {
+    if (options.output != "-") {
+        raster::write_output_file(options.output, bytes, options.policy);
+        return;
+    }
+    while (!bytes.empty()) {
+        const ::ssize_t written = ::write(1, bytes.data(), bytes.size());
+        if (written < 0 && errno == EINTR) continue;
+        if (written <= 0) {
+            throw std::runtime_error(std::string("cannot write to standard output: ") +
+                                     std::strerror(written < 0 ? errno : EIO));
+        }
+        bytes = bytes.subspan(static_cast<std::size_t>(written));
+    }
+}
+
+int run_exporter(CLI::App& app, const ExportOptions& options, int argc, char** argv,
                  const std::function<std::string()>& export_file) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
         if (error.get_exit_code() == 0) return app.exit(error);  // --help, --version
         std::cerr << app.get_name() << ": " << error.what() << " (see --help)\n";
-        return error.get_exit_code();
+        return 2;
     }
     try {
-        std::cout << export_file() << '\n';
+        const std::string report = export_file();
+        if (!options.quiet) (options.output == "-" ? std::cerr : std::cout) << report << '\n';
         return 0;
     } catch (const std::exception& error) {
         std::cerr << app.get_name() << ": " << error.what() << '\n';
@@ -59,17 +225,31 @@ int run_exporter(CLI::App& app, int argc, char** argv,
     }
 }
 
-std::string export_still(const ExportOptions& options, const std::function<void(raster::Framebuffer&)>& render) {
-    raster::Framebuffer frame(options.width, options.height);
-    render(frame);
-    const std::uintmax_t bytes = raster::write_webp_still(frame, options.output, options.effort);
-    return "Wrote " + options.output.string() + ": " + std::to_string(options.width) + "x" +
-           std::to_string(options.height) + " still, " + std::to_string(bytes) + " bytes";
+namespace {
+
+std::string describe_destination(const ExportOptions& options) {
+    return options.output == "-" ? "Wrote standard output" : "Wrote " + options.output;
 }
 
-std::string describe_animation(const ExportOptions& options, int frames, int duration_ms,
+}  // namespace
+
+std::string export_still(const CLI::App& app, const ExportOptions& options,
+                         const std::function<void(raster::Framebuffer&)>& render) {
+    check_output(app, options);
+    Progress progress(app.get_name(), options);
+    progress.stage("rendering");
+    raster::Framebuffer frame(options.width, options.height);
+    render(frame);
+    progress.stage("encoding");
+    const std::vector<std::uint8_t> bytes = raster::encode_webp_still(frame, options.effort);
+    deliver(options, bytes);
+    return describe_destination(options) + ": " + std::to_string(options.width) + "x" +
+           std::to_string(options.height) + " still, " + std::to_string(bytes.size()) + " bytes";
+}
+
+std::string describe_animation(const ExportOptions& options, int frames, std::int64_t duration_ms,
                                std::uintmax_t bytes) {
-    return "Wrote " + options.output.string() + ": " + std::to_string(options.width) + "x" +
+    return describe_destination(options) + ": " + std::to_string(options.width) + "x" +
            std::to_string(options.height) + ", " + std::to_string(frames) + " frames, " +
            std::to_string(duration_ms) + " ms, " + std::to_string(bytes) + " bytes";
 }

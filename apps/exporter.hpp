@@ -1,33 +1,96 @@
 #pragma once
 
+#include <raster/output_file.hpp>
 #include <raster/scenes.hpp>
 #include <raster/webp.hpp>
 
 #include <CLI/CLI.hpp>
 #include <cstdint>
-#include <filesystem>
 #include <functional>
+#include <span>
 #include <string>
+#include <utility>
+#include <vector>
 
-// What every exporter takes: where to write, how big, how hard to compress.
+// What every exporter takes: where to write, how big, how hard to compress, what to say.
 struct ExportOptions {
-    std::filesystem::path output;
+    explicit ExportOptions(std::string default_output) : output(std::move(default_output)) {}
+
+    std::string output;  // "-" writes to standard output
     int width = raster::kSceneWidth;
     int height = raster::kSceneHeight;
     raster::Effort effort = raster::Effort::balanced;
+    bool quiet = false;
+    bool progress = false;
+    raster::OutputPolicy policy;
 };
 
+// A CLI11 app whose help is wrapped to 80 columns and whose --version names the program.
+void configure_app(CLI::App& app);
+
+// OUTPUT / -o, --effort, --quiet, --progress, --follow-symlinks.
+void add_output_options(CLI::App& app, ExportOptions& options);
+// --width and --height, then the output options.
 void add_export_options(CLI::App& app, ExportOptions& options);
+// A decimal integer in [low, high]; anything else is a usage error that says so.
+CLI::Option* add_integer_option(CLI::App& app, const std::string& name, int& value, int low, int high,
+                                const std::string& help);
+// Accepts only one of `names` (any case) and lower-cases it; the error lists the names.
+CLI::Validator one_of(const std::vector<std::string>& names);
+
+// A choice taken by name only: numbers and unknown names are usage errors that list the names.
+template <typename Value>
+CLI::Option* add_choice_option(CLI::App& app, const std::string& name, Value& value,
+                               const std::vector<std::pair<std::string, Value>>& choices,
+                               const std::string& help, const std::string& default_name) {
+    std::vector<std::string> names;
+    for (const auto& choice : choices) names.push_back(choice.first);
+    const auto store = [&value, choices](const std::string& given) {
+        for (const auto& [choice_name, choice_value] : choices) {
+            if (choice_name == given) value = choice_value;
+        }
+    };
+    return app.add_option_function<std::string>(name, store, help)
+        ->check(one_of(names))
+        ->option_text(CLI::detail::join(names, "|") + " [" + default_name + "]");
+}
 void add_style_option(CLI::App& app, raster::CubeStyle& style, const std::string& line_colour);
 
-// Parses the command line and runs `export_file`, which returns the line to report.
-// Every failure prints one line to stderr and gives a non-zero exit code.
-int run_exporter(CLI::App& app, int argc, char** argv,
+// Progress on stderr while frames are made: on a terminal, or everywhere with --progress.
+class Progress {
+public:
+    Progress(std::string program, const ExportOptions& options);
+    ~Progress();
+    Progress(const Progress&) = delete;
+    Progress& operator=(const Progress&) = delete;
+
+    void frame(int done, int total);
+    void stage(const std::string& what);
+
+private:
+    void show(const std::string& text);
+    std::string program_;
+    bool enabled_;
+    bool terminal_;
+    int last_tenth_ = -1;
+    bool line_open_ = false;
+};
+
+// Fails early (a bad path, stdout on a terminal) and warns once about a name not ending in .webp.
+void check_output(const CLI::App& app, const ExportOptions& options);
+// Writes the finished bytes to the output file (atomically) or to standard output.
+void deliver(const ExportOptions& options, std::span<const std::uint8_t> bytes);
+
+// Parses the command line and runs `export_file`, which returns the line to report: on stdout,
+// or on stderr when the image itself goes to stdout, and not at all with --quiet. Usage errors
+// exit 2, failures 1, each with one line on stderr.
+int run_exporter(CLI::App& app, const ExportOptions& options, int argc, char** argv,
                  const std::function<std::string()>& export_file);
 
 // Renders one frame of the chosen size, writes it as a still and returns the line to report:
 // "Wrote out.webp: 800x600 still, 4211 bytes".
-std::string export_still(const ExportOptions& options, const std::function<void(raster::Framebuffer&)>& render);
+std::string export_still(const CLI::App& app, const ExportOptions& options,
+                         const std::function<void(raster::Framebuffer&)>& render);
 // "Wrote out.webp: 800x600, 360 frames, 7200 ms, 205874 bytes"
-std::string describe_animation(const ExportOptions& options, int frames, int duration_ms,
+std::string describe_animation(const ExportOptions& options, int frames, std::int64_t duration_ms,
                                std::uintmax_t bytes);

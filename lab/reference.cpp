@@ -51,6 +51,7 @@ void reference_polygon(std::span<const ExactPoint> corners, Coverage& target) {
                 const ExactPoint b = ring[(k + 1) % n];
                 const Exact ex = b.x - a.x;
                 const Exact ey = b.y - a.y;
+                if (ex == 0 && ey == 0) continue;  // a repeated corner is no edge
                 const Exact side = ex * (py - a.y) - ey * (px - a.x);
                 const bool top_left = ey < 0 || (ey == 0 && ex > 0);
                 inside = side > 0 || (side == 0 && top_left);

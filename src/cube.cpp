@@ -42,16 +42,6 @@ Cube Cube::posed(const glm::mat4& model) const {
     return result;
 }
 
-std::vector<std::size_t> Cube::visible_faces(glm::vec3 view) const {
-    std::vector<std::size_t> slots;
-    for (std::size_t slot = 0; slot < faces_.size(); ++slot) {
-        if (is_front_facing(faces_[slot].normal, view)) slots.push_back(slot);
-    }
-    return slots;
-}
-
-std::vector<Edge> Cube::visible_edges(glm::vec3 view) const { return edges_of(visible_faces(view)); }
-
 std::vector<Edge> Cube::edges() const {
     constexpr std::array<std::size_t, 6> kAllSlots{0, 1, 2, 3, 4, 5};
     return edges_of(kAllSlots);

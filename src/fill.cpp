@@ -92,16 +92,18 @@ std::int64_t rasterize_convex(std::span<const SubpixelPoint> corners, PixelRect 
     if (area == 0) return 0;
 
     std::array<EdgeFunction, kMaxCorners> edges{};
+    std::size_t edge_count = 0;
     for (std::size_t i = 0; i < count; ++i) {
         SubpixelPoint a = corners[i];
         SubpixelPoint b = corners[(i + 1) % count];
+        if (a == b) continue;  // a repeated corner bounds nothing: the polygon is the one without it
         if (area < 0) std::swap(a, b);  // walk every polygon in the same rotational sense
-        edges[i] = EdgeFunction::through(a, b);
+        edges[edge_count++] = EdgeFunction::through(a, b);
     }
     for (std::int64_t row = first_row; row <= last_row; ++row) {
         std::int64_t first = clip.x;
         std::int64_t last = std::int64_t{clip.x} + clip.width - 1;
-        for (std::size_t i = 0; i < count; ++i) clamp_to_edge(edges[i], row, first, last);
+        for (std::size_t i = 0; i < edge_count; ++i) clamp_to_edge(edges[i], row, first, last);
         if (first <= last) visit({static_cast<int>(row), static_cast<int>(first), static_cast<int>(last + 1)});
     }
     return last_row - first_row + 1;

@@ -51,6 +51,7 @@ void Framebuffer::fill_row(int y, int x_begin, int x_end, Rgb colour) noexcept {
     if (y < 0 || y >= height_) return;
     x_begin = std::max(x_begin, 0);
     x_end = std::min(x_end, width_);
+    if (x_begin >= x_end) return;  // empty, or wholly left or right of the buffer
     for (std::size_t at = offset_of(x_begin, y, width_), end = offset_of(x_end, y, width_); at < end;
          at += 3) {
         bytes_[at] = colour.r;

@@ -1,10 +1,9 @@
 // The only file that includes libwebp.
 #include <raster/webp.hpp>
 
-#include "atomic_file.hpp"
-
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <webp/demux.h>
@@ -78,9 +77,7 @@ Framebuffer framebuffer_from_rgba(const std::uint8_t* rgba, int width, int heigh
 
 }  // namespace
 
-std::uintmax_t write_webp_still(const Framebuffer& image, const std::filesystem::path& path,
-                                Effort effort) {
-    AtomicFile file(path);
+std::vector<std::uint8_t> encode_webp_still(const Framebuffer& image, Effort effort) {
     const WebPConfig config = lossless_config(effort);
     Picture frame(image);
     WebPMemoryWriter memory;
@@ -88,30 +85,38 @@ std::uintmax_t write_webp_still(const Framebuffer& image, const std::filesystem:
     frame.picture.writer = WebPMemoryWrite;
     frame.picture.custom_ptr = &memory;
     const bool encoded = WebPEncode(&config, &frame.picture) != 0;
-    const std::vector<std::uint8_t> bytes(memory.mem, memory.mem + memory.size);
+    std::vector<std::uint8_t> bytes(memory.mem, memory.mem + memory.size);
     WebPMemoryWriterClear(&memory);
-    if (!encoded) {
-        throw std::runtime_error("cannot encode '" + path.string() + "': libwebp error " +
-                                 std::to_string(frame.picture.error_code));
-    }
-    file.commit(bytes);
+    if (!encoded) throw std::runtime_error("cannot encode a still: libwebp error " + std::to_string(frame.picture.error_code));
+    return bytes;
+}
+
+std::uintmax_t write_webp_still(const Framebuffer& image, const std::filesystem::path& path,
+                                Effort effort, OutputPolicy policy) {
+    check_output_path(path, policy);
+    const std::vector<std::uint8_t> bytes = encode_webp_still(image, effort);
+    write_output_file(path, bytes, policy);
     return bytes.size();
 }
 
-struct AnimationWriter::State {
-    AtomicFile file;
-    std::filesystem::path path;
+struct AnimationEncoder::State {
     int width;
     int height;
     int frame_spacing_ms;
-    int next_timestamp_ms = 0;
+    std::int64_t next_timestamp_ms = 0;
     WebPConfig config;
     WebPAnimEncoder* encoder = nullptr;
 
-    State(const std::filesystem::path& destination, int w, int h, int spacing, Effort effort)
-        : file(destination), path(destination), width(w), height(h), frame_spacing_ms(spacing),
-          config(lossless_config(effort)) {
-        if (spacing < 1) throw std::invalid_argument("frame spacing must be at least 1 ms");
+    State(int w, int h, int spacing, Effort effort)
+        : width(w), height(h), frame_spacing_ms(spacing), config(lossless_config(effort)) {
+        if (w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide) {
+            throw std::invalid_argument("animation size must be 1.." + std::to_string(kMaxImageSide) +
+                                        " on each side, got " + std::to_string(w) + "x" + std::to_string(h));
+        }
+        if (spacing < 1 || spacing > kMaxFrameSpacingMs) {
+            throw std::invalid_argument("frame spacing must be 1.." + std::to_string(kMaxFrameSpacingMs) +
+                                        " ms, got " + std::to_string(spacing));
+        }
         WebPAnimEncoderOptions options;
         if (!WebPAnimEncoderOptionsInit(&options)) throw std::runtime_error("libwebp version mismatch");
         options.minimize_size = settings_for(effort).minimize_size ? 1 : 0;
@@ -125,50 +130,70 @@ struct AnimationWriter::State {
     State(const State&) = delete;
     State& operator=(const State&) = delete;
 
+    // The timestamp after the next frame, checked before libwebp's int can overflow.
+    int end_of_next_frame() const {
+        const std::int64_t end = next_timestamp_ms + frame_spacing_ms;
+        if (end > std::numeric_limits<int>::max()) {
+            throw std::length_error("the animation would last longer than WebP's 2147483647 ms");
+        }
+        return static_cast<int>(end);
+    }
+
     [[noreturn]] void fail(const std::string& what) {
-        throw std::runtime_error("cannot encode '" + path.string() + "': " + what + ": " +
-                                 WebPAnimEncoderGetError(encoder));
+        throw std::runtime_error("cannot encode the animation: " + what + ": " + WebPAnimEncoderGetError(encoder));
     }
 };
 
-AnimationWriter::AnimationWriter(const std::filesystem::path& path, int width, int height,
-                                 int frame_spacing_ms, Effort effort)
-    : state_(std::make_unique<State>(path, width, height, frame_spacing_ms, effort)) {}
+AnimationEncoder::AnimationEncoder(int width, int height, int frame_spacing_ms, Effort effort)
+    : state_(std::make_unique<State>(width, height, frame_spacing_ms, effort)) {}
 
-AnimationWriter::~AnimationWriter() = default;
-AnimationWriter::AnimationWriter(AnimationWriter&&) noexcept = default;
-AnimationWriter& AnimationWriter::operator=(AnimationWriter&&) noexcept = default;
+AnimationEncoder::~AnimationEncoder() = default;
+AnimationEncoder::AnimationEncoder(AnimationEncoder&&) noexcept = default;
+AnimationEncoder& AnimationEncoder::operator=(AnimationEncoder&&) noexcept = default;
 
-void AnimationWriter::add_frame(const Framebuffer& frame) {
-    if (!state_) throw std::logic_error("AnimationWriter used after finish()");
+void AnimationEncoder::add_frame(const Framebuffer& frame) {
+    if (!state_) throw std::logic_error("AnimationEncoder used after finish()");
     if (frame.width() != state_->width || frame.height() != state_->height) {
         throw std::invalid_argument("frame size differs from the animation's");
     }
+    const int end_ms = state_->end_of_next_frame();  // the last frame needs its end stamp too
+    const auto start_ms = static_cast<int>(state_->next_timestamp_ms);
     Picture picture(frame);
-    if (!WebPAnimEncoderAdd(state_->encoder, &picture.picture, state_->next_timestamp_ms,
-                            &state_->config)) {
-        state_->fail("frame at " + std::to_string(state_->next_timestamp_ms) + " ms");
+    if (!WebPAnimEncoderAdd(state_->encoder, &picture.picture, start_ms, &state_->config)) {
+        state_->fail("frame at " + std::to_string(start_ms) + " ms");
     }
-    state_->next_timestamp_ms += state_->frame_spacing_ms;
+    state_->next_timestamp_ms = end_ms;
 }
 
-std::uintmax_t AnimationWriter::finish() {
-    if (!state_) throw std::logic_error("AnimationWriter::finish() called twice");
+std::vector<std::uint8_t> AnimationEncoder::finish() {
+    if (!state_) throw std::logic_error("AnimationEncoder::finish() called twice");
     const std::unique_ptr<State> state = std::move(state_);
     // A last empty add sets the final frame's duration to one full spacing.
-    if (!WebPAnimEncoderAdd(state->encoder, nullptr, state->next_timestamp_ms, nullptr)) {
+    if (!WebPAnimEncoderAdd(state->encoder, nullptr, static_cast<int>(state->next_timestamp_ms), nullptr)) {
         state->fail("end of animation");
     }
     WebPData data;
     WebPDataInit(&data);
     if (!WebPAnimEncoderAssemble(state->encoder, &data)) state->fail("assembling");
-    const std::vector<std::uint8_t> bytes(data.bytes, data.bytes + data.size);
+    std::vector<std::uint8_t> bytes(data.bytes, data.bytes + data.size);
     WebPDataClear(&data);
-    state->file.commit(bytes);
+    return bytes;
+}
+
+AnimationWriter::AnimationWriter(const std::filesystem::path& path, int width, int height,
+                                 int frame_spacing_ms, Effort effort, OutputPolicy policy)
+    : path_(path), policy_(policy), encoder_(width, height, frame_spacing_ms, effort) {
+    check_output_path(path_, policy_);
+}
+
+std::uintmax_t AnimationWriter::finish() {
+    const std::vector<std::uint8_t> bytes = encoder_.finish();
+    write_output_file(path_, bytes, policy_);
     return bytes.size();
 }
 
-DecodedWebp read_webp(const std::filesystem::path& path) {
+WebpInfo for_each_webp_frame(const std::filesystem::path& path,
+                             const std::function<bool(const DecodedFrame&)>& visit) {
     const std::vector<std::uint8_t> bytes = read_bytes(path);
     const WebPData data{bytes.data(), bytes.size()};
     WebPAnimDecoderOptions options;
@@ -181,7 +206,8 @@ DecodedWebp read_webp(const std::filesystem::path& path) {
     if (!decoder || !WebPAnimDecoderGetInfo(decoder.get(), &info)) {
         throw std::runtime_error("'" + path.string() + "' is not a WebP file");
     }
-    DecodedWebp result{static_cast<int>(info.canvas_width), static_cast<int>(info.canvas_height), {}};
+    const WebpInfo result{static_cast<int>(info.canvas_width), static_cast<int>(info.canvas_height),
+                          static_cast<int>(info.frame_count)};
     int previous_end_ms = 0;
     while (WebPAnimDecoderHasMoreFrames(decoder.get())) {
         std::uint8_t* rgba = nullptr;
@@ -189,10 +215,22 @@ DecodedWebp read_webp(const std::filesystem::path& path) {
         if (!WebPAnimDecoderGetNext(decoder.get(), &rgba, &end_ms)) {
             throw std::runtime_error("'" + path.string() + "' has a corrupt frame");
         }
-        result.frames.push_back({framebuffer_from_rgba(rgba, result.width, result.height),
-                                 previous_end_ms, end_ms - previous_end_ms});
+        const DecodedFrame frame{framebuffer_from_rgba(rgba, result.width, result.height), previous_end_ms,
+                                 end_ms - previous_end_ms};
         previous_end_ms = end_ms;
+        if (!visit(frame)) break;
     }
+    return result;
+}
+
+DecodedWebp read_webp(const std::filesystem::path& path) {
+    DecodedWebp result{0, 0, {}};
+    const WebpInfo info = for_each_webp_frame(path, [&](const DecodedFrame& frame) {
+        result.frames.push_back(frame);
+        return true;
+    });
+    result.width = info.width;
+    result.height = info.height;
     return result;
 }
 

@@ -1,4 +1,5 @@
 #include <raster/draw_cube.hpp>
+#include <raster/line.hpp>
 #include <raster/palette.hpp>
 #include <raster/scenes.hpp>
 
@@ -7,6 +8,9 @@
 #include <glm/ext/matrix_transform.hpp>
 #include <glm/ext/scalar_constants.hpp>
 #include <gtest/gtest.h>
+#include <limits>
+#include <string>
+#include <vector>
 
 using raster::Framebuffer;
 using test_support::looks_like;
@@ -77,4 +81,58 @@ TEST(DrawCube, FilledStillCubeShowsNearRightAndBottomFacesOnly) {
     const std::string art = test_support::to_ascii_art(image, kFaceLegend);
     for (const char face : {'B', 'A', 'O'}) EXPECT_NE(art.find(face), std::string::npos) << face;
     for (const char face : {'R', 'I', 'J', '+'}) EXPECT_EQ(art.find(face), std::string::npos) << face;
+}
+
+namespace {
+
+// The face slots whose palette colour appears in a filled render.
+std::vector<std::size_t> slots_painted(const Framebuffer& image) {
+    std::vector<std::size_t> slots;
+    for (std::size_t slot = 0; slot < raster::kCubeFacePalette.size(); ++slot) {
+        bool seen = false;
+        for (int y = 0; y < image.height() && !seen; ++y) {
+            for (int x = 0; x < image.width() && !seen; ++x) seen = image.pixel(x, y) == raster::kCubeFacePalette[slot];
+        }
+        if (seen) slots.push_back(slot);
+    }
+    return slots;
+}
+
+}  // namespace
+
+TEST(DrawCube, CullingFillingAndCulledWireframesFollowOneFacingRuleEvenForSingularAndNaNPoses) {
+    constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+    constexpr float kInfinity = std::numeric_limits<float>::infinity();
+    const glm::mat4 tilted = raster::still_cube_pose();
+    std::vector<std::pair<std::string, glm::mat4>> poses{
+        {"flattened along z", glm::scale(tilted, glm::vec3(1, 1, 0))},
+        {"flattened along x", glm::scale(tilted, glm::vec3(0, 1, 1))},
+        {"squashed to a line", glm::scale(tilted, glm::vec3(0, 1, 0))},
+        {"zero matrix", glm::mat4(0.0F)},
+        {"flat and facing away", glm::scale(glm::mat4(1.0F), glm::vec3(-1, 1, 0))},
+        {"NaN entry", tilted},
+        {"infinite entry", tilted},
+        {"quarter turn", raster::tumble_pose(90, 360)},
+        {"still pose", tilted}};
+    poses[5].second[0][2] = kNaN;
+    poses[6].second[2][2] = kInfinity;
+    const raster::OrthoCamera camera(80, 60);
+    for (const auto& [name, pose] : poses) {
+        const raster::Cube cube = raster::Cube().posed(pose);
+        const std::vector<std::size_t> toward = raster::faces_toward_camera(camera, cube);
+        Framebuffer filled(80, 60);
+        raster::render_cube(filled, pose, raster::CubeStyle::filled, raster::kWhite);
+        EXPECT_EQ(slots_painted(filled), toward) << name;
+        Framebuffer culled(80, 60);
+        raster::render_cube(culled, pose, raster::CubeStyle::culled_wireframe, raster::kWhite);
+        Framebuffer expected(80, 60);
+        for (const raster::Edge& edge : cube.edges_of(toward)) {
+            raster::draw_line(expected, *camera.pixel_from_world(cube.corners()[edge.from]),
+                              *camera.pixel_from_world(cube.corners()[edge.to]), raster::kWhite);
+        }
+        EXPECT_EQ(culled, expected) << name;
+    }
+    const raster::Cube flat = raster::Cube().posed(glm::scale(glm::mat4(1.0F), glm::vec3(1, 1, 0)));
+    EXPECT_EQ(raster::faces_toward_camera(camera, flat), std::vector<std::size_t>{raster::kNearFace})
+        << "a cube flattened onto the screen shows its near face, though its normals are not finite";
 }

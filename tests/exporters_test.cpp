@@ -4,6 +4,7 @@
 #include "support/scratch.hpp"
 
 #include <algorithm>
+#include <sys/stat.h>
 #include <gtest/gtest.h>
 
 using raster::CubeStyle;
@@ -16,6 +17,7 @@ namespace {
 const std::string kStillCube = RASTER_STILL_CUBE;
 const std::string kAnimatedCube = RASTER_ANIMATED_CUBE;
 const std::string kStillUnitCube = RASTER_STILL_UNIT_CUBE;
+const std::string kWebpFrame = RASTER_WEBP_FRAME;
 
 int line_count(const std::string& text) {
     return static_cast<int>(std::count(text.begin(), text.end(), '\n'));
@@ -137,6 +139,7 @@ struct BadInput {
     std::string app;
     std::vector<std::string> arguments;
     std::string message;
+    bool usage_error = true;  // exit code 2; other failures exit 1
 };
 
 void PrintTo(const BadInput& bad, std::ostream* out) { *out << bad.case_name; }
@@ -147,29 +150,48 @@ TEST_P(ExporterRejects, WithOneLineANonZeroExitAndTheExistingFileUntouched) {
     const ScratchDir dir;
     test_support::write_text(dir / "existing.webp", "precious");
     test_support::write_text(dir / "a-file", "");
+    ASSERT_EQ(::mkfifo((dir / "a-fifo").c_str(), 0600), 0);
+    std::filesystem::create_symlink("existing.webp", dir / "a-link.webp");
+    raster::AnimationWriter two_frames(dir / "two-frames.webp", 4, 4, 20, raster::Effort::fast);
+    Framebuffer frame(4, 4);
+    two_frames.add_frame(frame);
+    frame.set_pixel(1, 1, raster::Rgb{255, 255, 255});  // identical frames would merge into one
+    two_frames.add_frame(frame);
+    two_frames.finish();
     const BadInput& bad = GetParam();
     const auto result = run(bad.app, bad.arguments, dir.path());
-    EXPECT_NE(result.exit_code, 0);
+    EXPECT_EQ(result.exit_code, bad.usage_error ? 2 : 1);
     EXPECT_EQ(result.out, "");
     EXPECT_EQ(line_count(result.err), 1) << result.err;
     EXPECT_NE(result.err.find(bad.message), std::string::npos) << result.err;
     EXPECT_EQ(test_support::read_text(dir / "existing.webp"), "precious");
-    EXPECT_EQ(dir.entries(), (std::vector<std::string>{"a-file", "existing.webp"}));
+    EXPECT_EQ(dir.entries(), (std::vector<std::string>{"a-fifo", "a-file", "a-link.webp", "existing.webp", "two-frames.webp"}));
 }
 
 INSTANTIATE_TEST_SUITE_P(
     BadInput, ExporterRejects,
     ::testing::Values(
         BadInput{"UnknownOption", kStillCube, {"--colour", "red", "existing.webp"}, "were not expected: existing.webp --colour"},
-        BadInput{"ZeroWidth", kStillCube, {"--width", "0", "existing.webp"}, "--width: Value 0 not in range"},
-        BadInput{"NegativeHeight", kStillCube, {"--height", "-3", "existing.webp"}, "--height: Value -3 not in range"},
-        BadInput{"AbsurdWidth", kStillUnitCube, {"--width", "100000", "existing.webp"}, "--width: Value 100000 not in range"},
-        BadInput{"HeightBeyondInt", kAnimatedCube, {"--height", "999999999999", "existing.webp"}, "--height"},
-        BadInput{"ZeroFrames", kAnimatedCube, {"--frames", "0", "existing.webp"}, "--frames: Value 0 not in range"},
-        BadInput{"UnknownEffort", kAnimatedCube, {"--effort", "turbo", "existing.webp"}, "--effort"},
-        BadInput{"UnknownStyle", kStillCube, {"--style", "shaded", "existing.webp"}, "--style"},
-        BadInput{"MissingDirectory", kStillCube, {"missing/out.webp"}, "directory 'missing' does not exist"},
-        BadInput{"ParentIsAFile", kAnimatedCube, {"a-file/out.webp"}, "'a-file' is not a directory"},
-        BadInput{"OutputIsADirectory", kStillUnitCube, {"."}, "cannot write '.'"},
-        BadInput{"UnwritablePlace", kAnimatedCube, {"/proc/raster-cannot-write-here.webp"}, "cannot write '/proc/"}),
+        BadInput{"ZeroWidth", kStillCube, {"--width", "0", "existing.webp"}, "--width: 0 is out of range (expected 1..16383)"},
+        BadInput{"NegativeHeight", kStillCube, {"--height", "-3", "existing.webp"}, "--height: -3 is out of range"},
+        BadInput{"AbsurdWidth", kStillUnitCube, {"--width", "100000", "existing.webp"}, "--width: 100000 is out of range"},
+        BadInput{"HeightBeyondInt", kAnimatedCube, {"--height", "999999999999", "existing.webp"}, "--height: 999999999999 is out of range"},
+        BadInput{"WidthNotANumber", kStillCube, {"--width", "abc", "existing.webp"}, "--width: 'abc' is not an integer"},
+        BadInput{"HexadecimalFrames", kAnimatedCube, {"--frames", "0x10", "existing.webp"}, "--frames: '0x10' is not an integer"},
+        BadInput{"FractionalFps", kAnimatedCube, {"--fps", "2.5", "existing.webp"}, "--fps: '2.5' is not an integer"},
+        BadInput{"ZeroFrames", kAnimatedCube, {"--frames", "0", "existing.webp"}, "--frames: 0 is out of range"},
+        BadInput{"FpsBrowsersWouldSlowDown", kAnimatedCube, {"--fps", "96", "existing.webp"}, "--fps: 96 is out of range (expected 1..95)"},
+        BadInput{"UnknownEffort", kAnimatedCube, {"--effort", "turbo", "existing.webp"}, "--effort: 'turbo' is not one of fast, default, max"},
+        BadInput{"EffortByNumber", kAnimatedCube, {"--effort", "0", "existing.webp"}, "--effort: '0' is not one of fast, default, max"},
+        BadInput{"UnknownStyle", kStillCube, {"--style", "wire", "existing.webp"}, "--style: 'wire' is not one of filled, wireframe, culled-wireframe"},
+        BadInput{"StyleByNumber", kAnimatedCube, {"--style", "2", "existing.webp"}, "--style: '2' is not one of filled"},
+        BadInput{"OutputTwice", kStillCube, {"-o", "a.webp", "existing.webp"}, "excludes"},
+        BadInput{"MissingDirectory", kStillCube, {"missing/out.webp"}, "directory 'missing' does not exist", false},
+        BadInput{"ParentIsAFile", kAnimatedCube, {"a-file/out.webp"}, "'a-file' is not a directory", false},
+        BadInput{"OutputIsADirectory", kStillUnitCube, {"."}, "cannot write '.'", false},
+        BadInput{"UnwritablePlace", kAnimatedCube, {"/proc/raster-cannot-write-here.webp"}, "cannot write '/proc/", false},
+        BadInput{"OutputIsAFifo", kAnimatedCube, {"a-fifo"}, "cannot write 'a-fifo': it is a FIFO", false},
+        BadInput{"OutputIsASymbolicLink", kStillCube, {"a-link.webp"}, "cannot write 'a-link.webp': it is a symbolic link", false},
+        BadInput{"FrameBeyondTheAnimation", kWebpFrame, {"two-frames.webp", "2", "existing.webp"}, "has 2 frame(s), numbered 0..1", false},
+        BadInput{"FrameOfAFileThatIsNotWebp", kWebpFrame, {"a-file", "0", "existing.webp"}, "'a-file' is not a WebP file", false}),
     [](const ::testing::TestParamInfo<BadInput>& param) { return param.param.case_name; });

@@ -131,3 +131,49 @@ TEST(FillConvex, SignedAreaIsPositiveForCornersClockwiseOnScreen) {
     EXPECT_LT(raster::twice_signed_area(Polygon{at(0, 0), at(1, 1), at(1, 0)}), 0);
     EXPECT_EQ(raster::twice_signed_area(Polygon{at(0, 0), at(1, 1), at(2, 2)}), 0);
 }
+
+TEST(FillConvex, ATriangleGivenAsFourCornersWithOneRepeatedDrawsTheTriangle) {
+    const Polygon triangle{at(1, 0.5), at(8.5, 0.5), at(1, 4.5)};
+    const Framebuffer expected = filled_10x5(triangle);
+    EXPECT_TRUE(looks_like(expected,
+                           {"..........", ".+++++++..", ".+++++....", ".+++......", ".+........"}));
+    for (std::size_t repeated = 0; repeated < triangle.size(); ++repeated) {
+        Polygon quad = triangle;
+        quad.insert(quad.begin() + static_cast<std::ptrdiff_t>(repeated), triangle[repeated]);
+        EXPECT_EQ(filled_10x5(quad), expected) << "corner " << repeated << " repeated";
+        quad.insert(quad.begin() + static_cast<std::ptrdiff_t>(repeated), triangle[repeated]);
+        EXPECT_EQ(filled_10x5(quad), expected) << "corner " << repeated << " listed three times";
+    }
+}
+
+TEST(FillConvex, ASquareSplitIntoDegenerateQuadsCoversEachPixelOnce) {
+    // Two triangles of an 8x8 square, each given as a quad that repeats its last corner.
+    Framebuffer image(10, 10);
+    const Polygon upper{at(1, 1), at(9, 1), at(9, 9), at(9, 9)};
+    const Polygon lower{at(1, 1), at(9, 9), at(1, 9), at(1, 1)};
+    int covered = 0;
+    for (const Polygon* half : {&upper, &lower}) {
+        raster::rasterize_convex(*half, {0, 0, 10, 10}, [&](raster::Span span) {
+            covered += span.x_end - span.x_begin;
+            image.fill_row(span.y, span.x_begin, span.x_end, kWhite);
+        });
+    }
+    EXPECT_EQ(covered, 64) << "every pixel of the square once";
+    Framebuffer square(10, 10);
+    fill_convex(square, Polygon{at(1, 1), at(9, 1), at(9, 9), at(1, 9)}, kWhite);
+    EXPECT_EQ(image, square);
+}
+
+TEST(FillConvex, CollinearRunsOfCornersDrawTheSamePolygon) {
+    const Polygon rectangle{at(1.5, 0.5), at(7.5, 0.5), at(7.5, 3.5), at(1.5, 3.5)};
+    const Polygon with_midpoints{at(1.5, 0.5), at(3, 0.5), at(5.25, 0.5), at(7.5, 0.5), at(7.5, 2),
+                                 at(7.5, 3.5), at(4, 3.5), at(1.5, 3.5)};
+    EXPECT_EQ(filled_10x5(with_midpoints), filled_10x5(rectangle));
+    const Polygon triangle{at(1, 0.5), at(8.5, 0.5), at(1, 4.5)};
+    const Polygon with_points_on_the_slant{at(1, 0.5), at(8.5, 0.5), at(4.75, 2.5), at(1, 4.5)};
+    EXPECT_EQ(filled_10x5(with_points_on_the_slant), filled_10x5(triangle));
+}
+
+TEST(FillConvex, AllCornersEqualDrawNothing) {
+    EXPECT_EQ(filled_10x5({at(3, 2), at(3, 2), at(3, 2), at(3, 2)}), Framebuffer(10, 5));
+}

@@ -42,6 +42,23 @@ TEST(Framebuffer, SkipsWritesOutsideIncludingNegativeCoordinatesWithoutWrapping)
     EXPECT_TRUE(looks_like(image, {"....", "....", "...."}));
 }
 
+TEST(Framebuffer, FillRowTakesSpansAnywhereInThePlane) {
+    Framebuffer image(4, 3);
+    constexpr int kMin = -2147483647 - 1;
+    constexpr int kMax = 2147483647;
+    for (const auto& [begin, end] : {std::pair{-10, -5}, {kMin, kMin}, {kMin, -1}, {4, 9}, {kMax, kMin},
+                                    {3, 1}, {kMax, kMax}, {-20, -19}, {2, 2}}) {
+        for (const int y : {0, 1, 2}) image.fill_row(y, begin, end, kWhite);
+    }
+    EXPECT_TRUE(looks_like(image, {"....", "....", "...."})) << "spans off the buffer or empty paint nothing";
+    image.fill_row(kMin, kMin, kMax, kWhite);
+    image.fill_row(kMax, kMin, kMax, kWhite);
+    image.fill_row(0, kMin, 2, kWhite);
+    image.fill_row(1, kMin, kMax, kWhite);
+    image.fill_row(2, 3, kMax, kWhite);
+    EXPECT_TRUE(looks_like(image, {"++..", "++++", "...+"}));
+}
+
 TEST(Framebuffer, ClearPaintsEveryPixel) {
     Framebuffer image(3, 2);
     image.clear({9, 8, 7});

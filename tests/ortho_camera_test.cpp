@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 #include <limits>
+#include <stdexcept>
 
 using raster::OrthoCamera;
 
@@ -67,4 +68,16 @@ TEST(OrthoCamera, NonFiniteAndFarAwayPositionsGiveNoPixel) {
     const raster::OrthoCamera camera(800, 600);
     EXPECT_FALSE(camera.pixel_from_world({std::numeric_limits<float>::quiet_NaN(), 0, 0}).has_value());
     EXPECT_FALSE(camera.subpixel_from_world({0, std::numeric_limits<float>::infinity(), 0}).has_value());
+}
+
+TEST(OrthoCamera, RejectsEmptyNegativeAndExtremeSizes) {
+    constexpr int kMin = std::numeric_limits<int>::min();
+    constexpr int kMax = std::numeric_limits<int>::max();
+    for (const auto& [width, height] : {std::pair{0, 600}, {800, 0}, {-1, 600}, {800, -600}, {kMin, 600},
+                                       {800, kMin}, {kMin, kMin}, {kMax, 600}, {800, kMax},
+                                       {raster::kMaxSubpixelCoordinate + 1, 600}}) {
+        EXPECT_THROW(OrthoCamera(width, height), std::invalid_argument) << width << "x" << height;
+    }
+    EXPECT_NO_THROW(OrthoCamera(1, 1));
+    EXPECT_NO_THROW(OrthoCamera(raster::kMaxSubpixelCoordinate, raster::kMaxSubpixelCoordinate));
 }

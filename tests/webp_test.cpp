@@ -4,6 +4,7 @@
 #include "support/scratch.hpp"
 
 #include <gtest/gtest.h>
+#include <limits>
 #include <stdexcept>
 
 using raster::AnimationWriter;
@@ -93,4 +94,35 @@ TEST(WebpRead, RejectsFilesThatAreNotWebp) {
     test_support::write_text(dir / "fake.webp", "RIFF....WEBPnot really");
     EXPECT_THROW((void)raster::read_webp(dir / "fake.webp"), std::runtime_error);
     EXPECT_THROW((void)raster::read_webp(dir / "absent.webp"), std::runtime_error);
+}
+
+TEST(WebpAnimation, TimestampsStopWithAnErrorBeforeTheyWouldOverflow) {
+    raster::AnimationEncoder encoder(1, 1, raster::kMaxFrameSpacingMs, raster::Effort::fast);
+    const Framebuffer pixel(1, 1);
+    for (int i = 0; i < 128; ++i) encoder.add_frame(pixel);  // 128 frames end at 2,147,483,520 ms
+    EXPECT_THROW(encoder.add_frame(pixel), std::length_error) << "the 129th would end past 2^31 - 1 ms";
+    const std::vector<std::uint8_t> bytes = encoder.finish();
+    EXPECT_GT(bytes.size(), 0U);
+}
+
+TEST(WebpAnimation, RejectsSpacingsAndSizesWebpCannotStore) {
+    for (const int spacing : {0, -20, raster::kMaxFrameSpacingMs + 1, std::numeric_limits<int>::max()}) {
+        EXPECT_THROW(raster::AnimationEncoder(8, 8, spacing), std::invalid_argument) << spacing;
+    }
+    for (const auto& [width, height] : {std::pair{0, 8}, {8, -1}, {raster::kMaxImageSide + 1, 8}}) {
+        EXPECT_THROW(raster::AnimationEncoder(width, height, 20), std::invalid_argument) << width << "x" << height;
+    }
+}
+
+TEST(WebpAnimation, EncoderBytesDecodeLikeTheWrittenFile) {
+    const ScratchDir dir;
+    raster::AnimationEncoder encoder(6, 5, 40, raster::Effort::fast);
+    AnimationWriter writer(dir / "anim.webp", 6, 5, 40, raster::Effort::fast);
+    for (int i = 0; i < 3; ++i) {
+        encoder.add_frame(gradient(6, 5, i));
+        writer.add_frame(gradient(6, 5, i));
+    }
+    const std::vector<std::uint8_t> bytes = encoder.finish();
+    EXPECT_EQ(writer.finish(), bytes.size());
+    EXPECT_EQ(test_support::read_text(dir / "anim.webp"), std::string(bytes.begin(), bytes.end()));
 }

@@ -27,8 +27,8 @@ struct Edge {
 // Face slots, in the order faces() lists them and palettes colour them.
 enum FaceSlot : std::size_t { kNearFace, kFarFace, kRightFace, kLeftFace, kTopFace, kBottomFace };
 
-// Front-facing means the outward normal points against the view direction: n . v < 0.
-// Faces seen exactly edge-on (n . v == 0) are not front-facing.
+// A normal points against the view direction: n . v < 0, so n . v == 0 (edge-on) does not. For
+// shading; what is drawn is decided on screen by faces_toward_camera (doc/conventions.md#facing).
 [[nodiscard]] bool is_front_facing(glm::vec3 normal, glm::vec3 view) noexcept;
 
 // A cube as eight corners and six faces. Made as the unit cube (edge 1, centred at the origin);
@@ -43,10 +43,6 @@ public:
     [[nodiscard]] const std::array<glm::vec3, 8>& corners() const noexcept { return corners_; }
     [[nodiscard]] const std::array<Face, 6>& faces() const noexcept { return faces_; }
 
-    // Slots of the faces that are front-facing for a camera looking along `view`.
-    [[nodiscard]] std::vector<std::size_t> visible_faces(glm::vec3 view) const;
-    // Edges of the front-facing faces, each listed once.
-    [[nodiscard]] std::vector<Edge> visible_edges(glm::vec3 view) const;
     // All twelve edges.
     [[nodiscard]] std::vector<Edge> edges() const;
     // Edges of the faces in `slots`, each listed once.

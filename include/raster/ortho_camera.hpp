@@ -13,6 +13,7 @@ namespace raster {
 // on screen (doc/conventions.md#camera).
 class OrthoCamera {
 public:
+    // The image size in pixels; throws std::invalid_argument unless both are 1..kMaxSubpixelCoordinate.
     OrthoCamera(int width, int height);
 
     // Continuous pixel coordinates: pixel centres sit on whole numbers, y grows downward.
@@ -29,8 +30,8 @@ public:
     [[nodiscard]] double scale() const noexcept { return scale_; }
 
 private:
-    double scale_;
-    glm::dvec2 centre_;
+    double scale_ = 0.0;
+    glm::dvec2 centre_{};
 };
 
 }  // namespace raster

@@ -1,14 +1,17 @@
 #pragma once
 
 #include <raster/framebuffer.hpp>
+#include <raster/output_file.hpp>
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <vector>
 
-// Lossless WebP files: stills, animations, and reading either back. Files are replaced
-// atomically; every failure throws std::runtime_error with a one-line reason.
+// Lossless WebP: stills, animations, and reading either back. Files are written by
+// write_output_file (atomic, links and devices refused); every failure throws
+// std::runtime_error with a one-line reason.
 namespace raster {
 
 // How hard the encoder works for a smaller file; doc/performance.md has the measured trade-off.
@@ -18,28 +21,52 @@ enum class Effort {
     max,       // method 6, quality 100, smallest-size search: slowest, for a final export
 };
 
-// Writes a lossless still; returns the file's size in bytes.
+// The longest frame a WebP animation can hold: its durations are 24-bit milliseconds.
+inline constexpr int kMaxFrameSpacingMs = (1 << 24) - 1;
+
+// The bytes of a lossless still .webp file.
+[[nodiscard]] std::vector<std::uint8_t> encode_webp_still(const Framebuffer& image,
+                                                          Effort effort = Effort::balanced);
+// Encodes and writes a lossless still; returns the file's size in bytes.
 std::uintmax_t write_webp_still(const Framebuffer& image, const std::filesystem::path& path,
-                                Effort effort = Effort::balanced);
+                                Effort effort = Effort::balanced, OutputPolicy policy = {});
 
-// Collects frames into a lossless animation that loops forever.
-class AnimationWriter {
+// Collects frames into the bytes of a lossless animation that loops forever.
+class AnimationEncoder {
 public:
-    // Claims the destination at once, so a bad path fails before any frame is rendered.
-    AnimationWriter(const std::filesystem::path& path, int width, int height,
-                    int frame_spacing_ms, Effort effort = Effort::balanced);
-    ~AnimationWriter();
-    AnimationWriter(AnimationWriter&&) noexcept;
-    AnimationWriter& operator=(AnimationWriter&&) noexcept;
+    // Throws std::invalid_argument for a size outside 1..kMaxImageSide or a spacing outside
+    // 1..kMaxFrameSpacingMs.
+    AnimationEncoder(int width, int height, int frame_spacing_ms, Effort effort = Effort::balanced);
+    ~AnimationEncoder();
+    AnimationEncoder(AnimationEncoder&&) noexcept;
+    AnimationEncoder& operator=(AnimationEncoder&&) noexcept;
 
-    // Frame i is shown at i * frame_spacing_ms for frame_spacing_ms.
+    // Frame i is shown at i * frame_spacing_ms for frame_spacing_ms. Throws std::length_error
+    // when the animation would outlast WebP's timestamps (2^31 - 1 ms, about 24.8 days).
     void add_frame(const Framebuffer& frame);
-    // Encodes, replaces the file, and returns its size in bytes. Call once.
-    std::uintmax_t finish();
+    // Assembles the animation. Call once.
+    [[nodiscard]] std::vector<std::uint8_t> finish();
 
 private:
     struct State;
     std::unique_ptr<State> state_;
+};
+
+// An AnimationEncoder that writes its file on finish.
+class AnimationWriter {
+public:
+    // Checks the destination at once, so a bad path fails before any frame is rendered.
+    AnimationWriter(const std::filesystem::path& path, int width, int height,
+                    int frame_spacing_ms, Effort effort = Effort::balanced, OutputPolicy policy = {});
+
+    void add_frame(const Framebuffer& frame) { encoder_.add_frame(frame); }
+    // Encodes, replaces the file, and returns its size in bytes. Call once.
+    std::uintmax_t finish();
+
+private:
+    std::filesystem::path path_;
+    OutputPolicy policy_;
+    AnimationEncoder encoder_;
 };
 
 struct DecodedFrame {
@@ -54,6 +81,17 @@ struct DecodedWebp {
     std::vector<DecodedFrame> frames;  // a still decodes as one frame
 };
 
+// Decodes every frame into memory; for long animations prefer for_each_webp_frame.
 [[nodiscard]] DecodedWebp read_webp(const std::filesystem::path& path);
+
+// Decodes frames one at a time, each composited onto the canvas as a player shows it; stops
+// early when `visit` returns false. Returns the canvas size and the file's frame count.
+struct WebpInfo {
+    int width;
+    int height;
+    int frame_count;  // frames in the file
+};
+WebpInfo for_each_webp_frame(const std::filesystem::path& path,
+                             const std::function<bool(const DecodedFrame&)>& visit);
 
 }  // namespace raster

@@ -1,10 +1,12 @@
 #include "scratch.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include <sys/wait.h>
+#include <pty.h>
 #include <unistd.h>
 
 namespace test_support {
@@ -28,6 +30,18 @@ std::vector<std::string> ScratchDir::entries() const {
     return names;
 }
 
+namespace {
+
+std::vector<char*> argv_of(const std::string& program, const std::vector<std::string>& arguments) {
+    std::vector<char*> argv;
+    argv.push_back(const_cast<char*>(program.c_str()));
+    for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
+    argv.push_back(nullptr);
+    return argv;
+}
+
+}  // namespace
+
 RunResult run(const std::string& program, const std::vector<std::string>& arguments,
               const fs::path& directory) {
     const ScratchDir capture;
@@ -36,10 +50,7 @@ RunResult run(const std::string& program, const std::vector<std::string>& argume
     const pid_t child = ::fork();
     if (child < 0) throw std::runtime_error("fork failed");
     if (child == 0) {
-        std::vector<char*> argv;
-        argv.push_back(const_cast<char*>(program.c_str()));
-        for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
-        argv.push_back(nullptr);
+        std::vector<char*> argv = argv_of(program, arguments);
         if (::chdir(directory.c_str()) != 0 || !std::freopen(out.c_str(), "w", stdout) ||
             !std::freopen(err.c_str(), "w", stderr)) {
             ::_exit(126);
@@ -50,6 +61,54 @@ RunResult run(const std::string& program, const std::vector<std::string>& argume
     int status = 0;
     ::waitpid(child, &status, 0);
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(out), read_text(err)};
+}
+
+RunResult run_on_terminal(const std::string& program, const std::vector<std::string>& arguments,
+                          const fs::path& directory) {
+    int terminal = -1;
+    const pid_t child = ::forkpty(&terminal, nullptr, nullptr, nullptr);
+    if (child < 0) throw std::runtime_error("forkpty failed");
+    if (child == 0) {
+        std::vector<char*> argv = argv_of(program, arguments);
+        if (::chdir(directory.c_str()) != 0) ::_exit(126);
+        ::execv(program.c_str(), argv.data());
+        ::_exit(127);
+    }
+    std::string out;
+    char buffer[4096];
+    for (;;) {
+        const ::ssize_t got = ::read(terminal, buffer, sizeof buffer);
+        if (got > 0) {
+            out.append(buffer, static_cast<std::size_t>(got));
+        } else if (!(got < 0 && errno == EINTR)) {
+            break;  // EIO once the child has closed the terminal
+        }
+    }
+    ::close(terminal);
+    int status = 0;
+    ::waitpid(child, &status, 0);
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out, ""};
+}
+
+int start(const std::string& program, const std::vector<std::string>& arguments, const fs::path& directory) {
+    const pid_t child = ::fork();
+    if (child < 0) throw std::runtime_error("fork failed");
+    if (child == 0) {
+        std::vector<char*> argv = argv_of(program, arguments);
+        if (::chdir(directory.c_str()) != 0 || !std::freopen("/dev/null", "w", stdout) ||
+            !std::freopen("/dev/null", "w", stderr)) {
+            ::_exit(126);
+        }
+        ::execv(program.c_str(), argv.data());
+        ::_exit(127);
+    }
+    return child;
+}
+
+int wait_for_signal(int pid) {
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    return WIFSIGNALED(status) ? WTERMSIG(status) : 0;
 }
 
 std::string read_text(const fs::path& path) {

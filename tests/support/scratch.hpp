@@ -33,6 +33,17 @@ struct RunResult {
 RunResult run(const std::string& program, const std::vector<std::string>& arguments,
               const std::filesystem::path& directory);
 
+// Runs a program with its stdin, stdout and stderr on a new pseudo-terminal; `out` holds all it
+// printed there, `err` is empty.
+RunResult run_on_terminal(const std::string& program, const std::vector<std::string>& arguments,
+                          const std::filesystem::path& directory);
+
+// Starts a program in `directory` with its output discarded; returns its process id.
+int start(const std::string& program, const std::vector<std::string>& arguments,
+          const std::filesystem::path& directory);
+// Waits for a started program; returns the signal that ended it, or 0 if it exited.
+int wait_for_signal(int pid);
+
 std::string read_text(const std::filesystem::path& path);
 void write_text(const std::filesystem::path& path, const std::string& text);
 

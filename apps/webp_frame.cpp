@@ -1,0 +1,42 @@
+#include "exporter.hpp"
+
+#include <optional>
+#include <stdexcept>
+
+int main(int argc, char** argv) {
+    CLI::App app("Writes one frame of an animated WebP as a full lossless still, composited as a "
+                 "player shows it (webpmux -get frame returns only the changed rectangle).",
+                 "webp-frame");
+    app.footer("Examples:\n"
+               "  webp-frame spin.webp 0 first.webp       # the first frame\n"
+               "  webp-frame spin.webp 90 - | dwebp -o frame.png -- -");
+    configure_app(app);
+    std::string input;
+    app.add_option("input", input, "The animated (or still) WebP file to read")->required()->option_text("FILE");
+    int index = 0;
+    add_integer_option(app, "frame", index, 0, 1 << 30, "Which frame, counting from 0")
+        ->required()
+        ->option_text("N");
+    ExportOptions options{"frame.webp"};
+    add_output_options(app, options);
+
+    return run_exporter(app, options, argc, argv, [&] {
+        check_output(app, options);
+        std::optional<raster::Framebuffer> found;
+        int seen = 0;
+        const raster::WebpInfo info = raster::for_each_webp_frame(input, [&](const raster::DecodedFrame& frame) {
+            if (seen++ < index) return true;
+            found = frame.image;
+            return false;
+        });
+        if (!found) {
+            throw std::runtime_error("'" + input + "' has " + std::to_string(info.frame_count) +
+                                     " frame(s), numbered 0.." + std::to_string(info.frame_count - 1));
+        }
+        const std::vector<std::uint8_t> bytes = raster::encode_webp_still(*found, options.effort);
+        deliver(options, bytes);
+        return "Wrote " + (options.output == "-" ? std::string("standard output") : options.output) + ": frame " +
+               std::to_string(index) + " of " + input + ", " + std::to_string(info.width) + "x" +
+               std::to_string(info.height) + ", " + std::to_string(bytes.size()) + " bytes";
+    });
+}
