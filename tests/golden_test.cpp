@@ -1,8 +1,10 @@
 #include <raster/scenes.hpp>
+#include <raster/webp.hpp>
 
 #include "support/golden.hpp"
 
 #include <cstdio>
+#include <cstdlib>
 #include <gtest/gtest.h>
 
 using raster::CubeStyle;
@@ -69,5 +71,22 @@ TEST(Golden, AnimatedCubeDigestOfEveryFrameInEachStyle) {
             digests.push_back(test_support::digest_of(image));
         }
         EXPECT_TRUE(test_support::matches_digests(digests, "animated-cube/" + style_name(style)));
+    }
+}
+
+TEST(Golden, ReadmeAnimationsShowWhatTheExporterDrawsToday) {
+    if (std::getenv("RASTER_UPDATE_SNAPSHOTS") != nullptr) GTEST_SKIP() << "update-snapshots rewrites them next";
+    for (const CubeStyle style : {CubeStyle::filled, CubeStyle::wireframe, CubeStyle::culled_wireframe}) {
+        const std::string file = style == CubeStyle::filled ? "animated-cube" : "animated-" + style_name(style);
+        std::vector<std::string> digests;
+        raster::for_each_webp_frame(std::string(RASTER_IMAGES_DIR) + "/" + file + ".webp",
+                                    [&](const raster::DecodedFrame& frame) {
+                                        // libwebp merges identical neighbours into one longer frame
+                                        const int shown = frame.duration_ms / raster::kFrameSpacingMs;
+                                        for (int i = 0; i < shown; ++i) digests.push_back(test_support::digest_of(frame.image));
+                                        return true;
+                                    });
+        EXPECT_TRUE(test_support::matches_digests(digests, "animated-cube/" + style_name(style)))
+            << "doc/images/" << file << ".webp is stale: cmake --build --preset release --target update-snapshots";
     }
 }

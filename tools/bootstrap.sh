@@ -5,15 +5,20 @@ set -euo pipefail
 usage() {
     cat <<'TXT'
 usage: tools/bootstrap.sh COMMAND
-  run [OUTPUT.webp]  build in Release and render the tumbling cube (default out/animated-cube.webp)
+  run [OUTPUT.webp]  build the exporters in Release and render the tumbling cube
+                     (default out/animated-cube.webp, relative to where you are)
   test               build in Release and run every test
   sanitize           build with AddressSanitizer and UndefinedBehaviorSanitizer and run every test
   fuzz [SECONDS]     build the libFuzzer target with clang and fuzz fill and line (default 60 s)
   lab                measure every raster method and redraw the charts in doc/lab/
+  -h, --help         print this help
+Each command first installs the Debian 12 packages it needs that are missing (apt-get, with
+sudo when not root).
 TXT
 }
 
-base_packages=(cmake g++ make pkg-config libglm-dev libwebp-dev libcli11-dev libgtest-dev libbenchmark-dev webp)
+app_packages=(cmake g++ make pkg-config libglm-dev libwebp-dev libcli11-dev)
+base_packages=("${app_packages[@]}" libgtest-dev libbenchmark-dev webp)
 
 install_missing() {
     local missing=()
@@ -34,14 +39,18 @@ build() {
     cmake --build --preset "$1" -j "$(nproc)"
 }
 
+caller_dir="$PWD"
 cd "$(dirname "$0")/.."
 case "${1:-}" in
 run)
     output="${2:-out/animated-cube.webp}"
-    install_missing "${base_packages[@]}"
-    build release
-    mkdir -p "$(dirname "$output")"
-    build/release/bin/animated-cube "$output"
+    [[ "$output" = /* || "$output" = - ]] || output="$caller_dir/$output"
+    install_missing "${app_packages[@]}"
+    # The exporters alone, in their own tree: no tests, lab or Google Benchmark to build.
+    cmake --preset apps
+    cmake --build --preset apps -j "$(nproc)"
+    [ "$output" = - ] || mkdir -p "$(dirname "$output")"
+    build/apps/bin/animated-cube "$output"
     ;;
 test)
     install_missing "${base_packages[@]}"
@@ -64,6 +73,9 @@ lab)
     install_missing "${base_packages[@]}" gnuplot-nox
     build release
     cmake --build --preset release --target lab
+    ;;
+-h | --help)
+    usage
     ;;
 *)
     usage >&2
