@@ -78,11 +78,12 @@ CLI::Option* add_integer_option(CLI::App& app, const std::string& name, int& val
             if (error == std::errc::result_out_of_range || parsed < low || parsed > high) {
                 return given + " is out of range (expected " + range + ")";
             }
+            given = std::to_string(parsed);  // CLI11 would read a leading 0 as octal
             return {};
         },
         "", "decimal " + range);
     return app.add_option(name, value, help)
-        ->check(decimal_in_range)
+        ->transform(decimal_in_range)
         ->option_text("N [" + std::to_string(value) + "]");
 }
 
@@ -184,7 +185,9 @@ void check_output(const CLI::App& app, const ExportOptions& options) {
     }
     raster::check_output_path(options.output, options.policy);
     const std::string extension = std::filesystem::path(options.output).extension().string();
-    if (extension != ".webp" && extension != ".WEBP" && !options.quiet) {
+    std::string lowered = extension;
+    std::transform(lowered.begin(), lowered.end(), lowered.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (lowered != ".webp" && !options.quiet) {
         std::cerr << app.get_name() << ": warning: '" << options.output
                   << "' does not end in .webp, but it will hold WebP data\n";
     }
@@ -217,7 +220,8 @@ int run_exporter(CLI::App& app, const ExportOptions& options, int argc, char** a
     }
     try {
         const std::string report = export_file();
-        if (!options.quiet) (options.output == "-" ? std::cerr : std::cout) << report << '\n';
+        std::ostream& out = options.output == "-" ? std::cerr : std::cout;
+        if (!options.quiet && !(out << report << '\n' << std::flush)) return 1;  // e.g. a closed stdout
         return 0;
     } catch (const std::exception& error) {
         std::cerr << app.get_name() << ": " << error.what() << '\n';

@@ -51,7 +51,7 @@ CLI::Option* add_choice_option(CLI::App& app, const std::string& name, Value& va
         }
     };
     return app.add_option_function<std::string>(name, store, help)
-        ->check(one_of(names))
+        ->transform(one_of(names))
         ->option_text(CLI::detail::join(names, "|") + " [" + default_name + "]");
 }
 void add_style_option(CLI::App& app, raster::CubeStyle& style, const std::string& line_colour);

@@ -1,8 +1,22 @@
-# What `cmake --install` puts in place for consumers: the CMake package, a pkg-config file and the licence.
+# What `cmake --install` puts in place for consumers: the library, headers and exporters, the
+# CMake package, a pkg-config file and the licence.
 include(CMakePackageConfigHelpers)
+install(TARGETS raster EXPORT raster-targets
+  ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+  LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/raster ${PROJECT_BINARY_DIR}/src/generated/raster
+  DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+if(RASTER_BUILD_APPS)
+  install(TARGETS ${RASTER_APPS} EXPORT raster-targets RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+endif()
 set(RASTER_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/raster)
 
 install(EXPORT raster-targets NAMESPACE raster:: DESTINATION ${RASTER_CMAKE_DIR} FILE raster-targets.cmake)
+if(BUILD_SHARED_LIBS)
+  set(RASTER_NEEDS_WEBP_AT_LINK FALSE)
+else()
+  set(RASTER_NEEDS_WEBP_AT_LINK TRUE)
+endif()
 configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/raster-config.cmake.in
   ${PROJECT_BINARY_DIR}/raster-config.cmake INSTALL_DESTINATION ${RASTER_CMAKE_DIR})
 # Before 1.0 a minor release may change the API, so only the same minor version is compatible.
@@ -27,4 +41,4 @@ configure_file(${CMAKE_CURRENT_LIST_DIR}/raster.pc.in ${PROJECT_BINARY_DIR}/rast
 install(FILES ${PROJECT_BINARY_DIR}/raster.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
 
 install(FILES ${PROJECT_SOURCE_DIR}/LICENSE ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/CHANGELOG.md
-  DESTINATION ${CMAKE_INSTALL_DOCDIR})
+  DESTINATION ${CMAKE_INSTALL_DATAROOTDIR}/doc/raster)

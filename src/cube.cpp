@@ -19,10 +19,6 @@ std::array<glm::vec3, 8> unit_corners() {
 
 }  // namespace
 
-bool is_front_facing(glm::vec3 normal, glm::vec3 view) noexcept {
-    return glm::dot(normal, view) < 0.0F;
-}
-
 Cube::Cube()
     : corners_(unit_corners()),
       faces_{{

@@ -3,6 +3,7 @@
 #include <array>
 #include <cerrno>
 #include <csignal>
+#include <cstdio>
 #include <cstring>
 #include <fcntl.h>
 #include <optional>
@@ -132,6 +133,12 @@ public:
         if (closed != 0) fail(target_, std::strerror(errno));
         if (::rename(path_.c_str(), destination.c_str()) != 0) fail(target_, std::strerror(errno));
         path_.clear();
+        // Make the rename itself durable; a directory that cannot be synced is no error.
+        const int directory = ::open(directory_of(destination).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+        if (directory >= 0) {
+            ::fsync(directory);
+            ::close(directory);
+        }
     }
 
 private:

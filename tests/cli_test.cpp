@@ -13,15 +13,15 @@
 #include <thread>
 
 using raster::Framebuffer;
+using test_support::kAnimatedCube;
+using test_support::kStillCube;
+using test_support::kStillUnitCube;
+using test_support::kWebpFrame;
 using test_support::run;
 using test_support::ScratchDir;
 
 namespace {
 
-const std::string kStillCube = RASTER_STILL_CUBE;
-const std::string kAnimatedCube = RASTER_ANIMATED_CUBE;
-const std::string kStillUnitCube = RASTER_STILL_UNIT_CUBE;
-const std::string kWebpFrame = RASTER_WEBP_FRAME;
 const std::vector<std::string> kApps{kStillCube, kAnimatedCube, kStillUnitCube, kWebpFrame};
 
 std::string name_of(const std::string& program) { return std::filesystem::path(program).filename().string(); }
@@ -176,4 +176,21 @@ TEST(Cli, InterruptsLeaveNoFileBehindAndTheExistingOutputUnchanged) {
         EXPECT_EQ(test_support::wait_for_signal(fresh), signal);
         EXPECT_EQ(dir.entries(), std::vector<std::string>{"existing.webp"}) << strsignal(signal);
     }
+}
+
+TEST(Cli, LeadingZerosAreDecimalNotOctal) {
+    const ScratchDir dir;
+    const auto result = run(kStillUnitCube, {"--width", "010", "--height", "08", "z.webp"}, dir.path());
+    EXPECT_EQ(result.exit_code, 0) << result.err;
+    const raster::DecodedWebp decoded = raster::read_webp(dir / "z.webp");
+    EXPECT_EQ(decoded.width, 10);
+    EXPECT_EQ(decoded.height, 8);
+}
+
+TEST(Cli, ChoicesIgnoreCase) {
+    const ScratchDir dir;
+    EXPECT_EQ(run(kStillCube, {"--style", "WireFrame", "--effort", "FAST", "w.webp"}, dir.path()).exit_code, 0);
+    Framebuffer expected(raster::kSceneWidth, raster::kSceneHeight);
+    raster::render_still_cube(expected, raster::CubeStyle::wireframe);
+    EXPECT_EQ(raster::read_webp(dir / "w.webp").frames.at(0).image, expected);
 }

@@ -9,15 +9,15 @@
 
 using raster::CubeStyle;
 using raster::Framebuffer;
+using test_support::kAnimatedCube;
+using test_support::kStillCube;
+using test_support::kStillUnitCube;
+using test_support::kWebpFrame;
 using test_support::run;
 using test_support::ScratchDir;
 
 namespace {
 
-const std::string kStillCube = RASTER_STILL_CUBE;
-const std::string kAnimatedCube = RASTER_ANIMATED_CUBE;
-const std::string kStillUnitCube = RASTER_STILL_UNIT_CUBE;
-const std::string kWebpFrame = RASTER_WEBP_FRAME;
 
 int line_count(const std::string& text) {
     return static_cast<int>(std::count(text.begin(), text.end(), '\n'));

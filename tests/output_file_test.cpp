@@ -2,7 +2,9 @@
 
 #include "support/scratch.hpp"
 
+#include <csignal>
 #include <gtest/gtest.h>
+#include <unistd.h>
 #include <stdexcept>
 #include <string>
 #include <sys/stat.h>
@@ -133,4 +135,28 @@ TEST(OutputFile, BadDestinationsFailWithOneLineAndLeaveNothing) {
         EXPECT_EQ(message.find('\n'), std::string::npos) << message;
     }
     EXPECT_EQ(dir.entries(), (std::vector<std::string>{"a-directory", "a-file"}));
+}
+
+TEST(OutputFile, ASignalWhileTheTemporaryFileExistsWaitsUntilTheNewFileIsInPlace) {
+    const ScratchDir dir;
+    test_support::write_text(dir / "out.webp", "old");
+    const std::vector<std::uint8_t> big(std::size_t{256} << 20, 'n');  // long enough to catch in the act
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        std::signal(SIGTERM, SIG_DFL);
+        write_output_file(dir / "out.webp", big);
+        ::_exit(0);
+    }
+    bool caught = false;
+    for (int poll = 0; poll < 200000 && !caught; ++poll) {
+        for (const auto& entry : fs::directory_iterator(dir.path())) {
+            if (entry.path().filename().string().starts_with(".raster-")) caught = true;
+        }
+    }
+    ::kill(child, SIGTERM);
+    EXPECT_EQ(test_support::wait_for_signal(child), caught ? SIGTERM : 0);
+    if (!caught) GTEST_SKIP() << "the write finished before the temporary file was seen";
+    EXPECT_EQ(dir.entries(), std::vector<std::string>{"out.webp"}) << "no temporary file is left";
+    EXPECT_EQ(fs::file_size(dir / "out.webp"), big.size()) << "the signal waited for the new file";
 }

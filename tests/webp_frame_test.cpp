@@ -6,13 +6,11 @@
 #include <gtest/gtest.h>
 
 using raster::Framebuffer;
+using test_support::kAnimatedCube;
+using test_support::kWebpFrame;
 using test_support::run;
 using test_support::ScratchDir;
 
-namespace {
-const std::string kAnimatedCube = RASTER_ANIMATED_CUBE;
-const std::string kWebpFrame = RASTER_WEBP_FRAME;
-}  // namespace
 
 TEST(WebpFrameApp, WritesFrameNAsTheWholePictureAPlayerShows) {
     const ScratchDir dir;

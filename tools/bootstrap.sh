@@ -45,10 +45,13 @@ case "${1:-}" in
 run)
     output="${2:-out/animated-cube.webp}"
     [[ "$output" = /* || "$output" = - ]] || output="$caller_dir/$output"
-    install_missing "${app_packages[@]}"
-    # The exporters alone, in their own tree: no tests, lab or Google Benchmark to build.
-    cmake --preset apps
-    cmake --build --preset apps -j "$(nproc)"
+    # The exporters alone, in their own tree: no tests, lab or Google Benchmark to build. Build
+    # chatter goes to stderr, so that `run -` writes nothing but the image to stdout.
+    {
+        install_missing "${app_packages[@]}"
+        cmake --preset apps
+        cmake --build --preset apps -j "$(nproc)"
+    } >&2
     [ "$output" = - ] || mkdir -p "$(dirname "$output")"
     build/apps/bin/animated-cube "$output"
     ;;

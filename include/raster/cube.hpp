@@ -27,10 +27,6 @@ struct Edge {
 // Face slots, in the order faces() lists them and palettes colour them.
 enum FaceSlot : std::size_t { kNearFace, kFarFace, kRightFace, kLeftFace, kTopFace, kBottomFace };
 
-// A normal points against the view direction: n . v < 0, so n . v == 0 (edge-on) does not. For
-// shading; what is drawn is decided on screen by faces_toward_camera (doc/conventions.md#facing).
-[[nodiscard]] bool is_front_facing(glm::vec3 normal, glm::vec3 view) noexcept;
-
 // A cube as eight corners and six faces. Made as the unit cube (edge 1, centred at the origin);
 // posed() moves it with a model matrix.
 class Cube {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <csignal>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -94,6 +95,11 @@ int start(const std::string& program, const std::vector<std::string>& arguments,
     const pid_t child = ::fork();
     if (child < 0) throw std::runtime_error("fork failed");
     if (child == 0) {
+        // Signals ignored or held by whoever ran the tests (nohup, a background job) must not be.
+        for (const int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, SIG_DFL);
+        sigset_t none;
+        sigemptyset(&none);
+        ::sigprocmask(SIG_SETMASK, &none, nullptr);
         std::vector<char*> argv = argv_of(program, arguments);
         if (::chdir(directory.c_str()) != 0 || !std::freopen("/dev/null", "w", stdout) ||
             !std::freopen("/dev/null", "w", stderr)) {

@@ -48,3 +48,13 @@ std::string read_text(const std::filesystem::path& path);
 void write_text(const std::filesystem::path& path, const std::string& text);
 
 }  // namespace test_support
+
+namespace test_support {
+
+// The built programs under test, by path.
+inline const std::string kStillCube = RASTER_STILL_CUBE;
+inline const std::string kAnimatedCube = RASTER_ANIMATED_CUBE;
+inline const std::string kStillUnitCube = RASTER_STILL_UNIT_CUBE;
+inline const std::string kWebpFrame = RASTER_WEBP_FRAME;
+
+}  // namespace test_support
