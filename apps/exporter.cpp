@@ -136,9 +136,11 @@ void add_style_option(CLI::App& app, raster::CubeStyle& style, const std::string
         app, "--style", style,
         {{"filled", raster::CubeStyle::filled},
          {"wireframe", raster::CubeStyle::wireframe},
-         {"culled-wireframe", raster::CubeStyle::culled_wireframe}},
+         {"culled-wireframe", raster::CubeStyle::culled_wireframe},
+         {"lit", raster::CubeStyle::lit}},
         "filled: six flat-coloured faces; wireframe: all 12 edges in " + line_colour +
-            "; culled-wireframe: only the edges of faces turned toward the camera",
+            "; culled-wireframe: only the edges of faces turned toward the camera; lit: one blue "
+            "lit by a directional light (0.0.8)",
         "filled");
 }
 
@@ -209,8 +211,7 @@ void deliver(const ExportOptions& options, std::span<const std::uint8_t> bytes) 
     }
 }
 
-int run_exporter(CLI::App& app, const ExportOptions& options, int argc, char** argv,
-                 const std::function<std::string()>& export_file) {
+std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
@@ -218,6 +219,12 @@ int run_exporter(CLI::App& app, const ExportOptions& options, int argc, char** a
         std::cerr << app.get_name() << ": " << error.what() << " (see --help)\n";
         return 2;
     }
+    return std::nullopt;
+}
+
+int run_exporter(CLI::App& app, const ExportOptions& options, int argc, char** argv,
+                 const std::function<std::string()>& export_file) {
+    if (const std::optional<int> exit_code = parse_command_line(app, argc, argv)) return *exit_code;
     try {
         const std::string report = export_file();
         std::ostream& out = options.output == "-" ? std::cerr : std::cout;
@@ -251,9 +258,31 @@ std::string export_still(const CLI::App& app, const ExportOptions& options,
            std::to_string(options.height) + " still, " + std::to_string(bytes.size()) + " bytes";
 }
 
-std::string describe_animation(const ExportOptions& options, int frames, std::int64_t duration_ms,
-                               std::uintmax_t bytes) {
+void add_fps_option(CLI::App& app, int& fps) {
+    // Browsers play frames of 10 ms or less at 100 ms, so the fastest honest rate gives 11 ms.
+    constexpr int kMaxFps = 95;
+    add_integer_option(app, "--fps", fps, 1, kMaxFps,
+                       "Playback rate, 1..95. WebP stores whole milliseconds, so a frame lasts "
+                       "round(1000 / fps) ms; browsers play frames of 10 ms or less at 100 ms, "
+                       "so faster rates would play slower");
+}
+
+std::string export_animation(const CLI::App& app, const ExportOptions& options, int frames, int fps,
+                             const std::function<void(raster::Framebuffer&, int)>& render) {
+    check_output(app, options);
+    const int spacing_ms = (1000 + fps / 2) / fps;
+    raster::AnimationEncoder encoder(options.width, options.height, spacing_ms, options.effort);
+    raster::Framebuffer frame(options.width, options.height);
+    Progress progress(app.get_name(), options);
+    for (int i = 0; i < frames; ++i) {
+        render(frame, i);
+        encoder.add_frame(frame);
+        progress.frame(i + 1, frames);
+    }
+    progress.stage("assembling the animation");
+    const std::vector<std::uint8_t> bytes = encoder.finish();
+    deliver(options, bytes);
     return describe_destination(options) + ": " + std::to_string(options.width) + "x" +
            std::to_string(options.height) + ", " + std::to_string(frames) + " frames, " +
-           std::to_string(duration_ms) + " ms, " + std::to_string(bytes) + " bytes";
+           std::to_string(std::int64_t{frames} * spacing_ms) + " ms, " + std::to_string(bytes.size()) + " bytes";
 }

@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <span>
 #include <string>
 #include <utility>
@@ -81,6 +82,10 @@ void check_output(const CLI::App& app, const ExportOptions& options);
 // Writes the finished bytes to the output file (atomically) or to standard output.
 void deliver(const ExportOptions& options, std::span<const std::uint8_t> bytes);
 
+// Parses the command line; an exit code when the program should stop there: 0 after --help or
+// --version, 2 after a usage error (reported in one line on stderr).
+std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv);
+
 // Parses the command line and runs `export_file`, which returns the line to report: on stdout,
 // or on stderr when the image itself goes to stdout, and not at all with --quiet. Usage errors
 // exit 2, failures 1, each with one line on stderr.
@@ -91,6 +96,9 @@ int run_exporter(CLI::App& app, const ExportOptions& options, int argc, char** a
 // "Wrote out.webp: 800x600 still, 4211 bytes".
 std::string export_still(const CLI::App& app, const ExportOptions& options,
                          const std::function<void(raster::Framebuffer&)>& render);
-// "Wrote out.webp: 800x600, 360 frames, 7200 ms, 205874 bytes"
-std::string describe_animation(const ExportOptions& options, int frames, std::int64_t duration_ms,
-                               std::uintmax_t bytes);
+// --fps 1..95, with the browsers' 10 ms rule in its help.
+void add_fps_option(CLI::App& app, int& fps);
+// Renders `frames` frames at `fps` into a looping animation, writes it and returns the line to
+// report: "Wrote out.webp: 800x600, 360 frames, 7200 ms, 205874 bytes".
+std::string export_animation(const CLI::App& app, const ExportOptions& options, int frames, int fps,
+                             const std::function<void(raster::Framebuffer&, int)>& render);

@@ -1,6 +1,7 @@
 #include <raster/scenes.hpp>
 
 #include <raster/cube.hpp>
+#include <raster/diary_scenes.hpp>
 #include <raster/draw_cube.hpp>
 #include <raster/line.hpp>
 #include <raster/ortho_camera.hpp>
@@ -29,12 +30,17 @@ glm::mat4 still_cube_pose() {
            half_size();
 }
 
-glm::mat4 tumble_pose(int frame, int frame_count) {
-    const float t = 2.0F * std::numbers::pi_v<float> * static_cast<float>(frame) /
-                    static_cast<float>(frame_count);
+glm::mat4 tumble_rotation(float t) {
     const glm::mat4 identity(1.0F);
-    return glm::rotate(identity, t, kAxisZ) * glm::rotate(identity, t, kAxisY) *
-           glm::rotate(identity, t, kAxisX) * half_size();
+    return glm::rotate(identity, t, kAxisZ) * glm::rotate(identity, t, kAxisY) * glm::rotate(identity, t, kAxisX);
+}
+
+float tumble_angle(int frame, int frame_count) {
+    return 2.0F * std::numbers::pi_v<float> * static_cast<float>(frame) / static_cast<float>(frame_count);
+}
+
+glm::mat4 tumble_pose(int frame, int frame_count) {
+    return tumble_rotation(tumble_angle(frame, frame_count)) * half_size();
 }
 
 void render_white_pixel(Framebuffer& framebuffer) {
@@ -57,6 +63,13 @@ void render_spokes(Framebuffer& framebuffer) {
 
 void render_cube(Framebuffer& framebuffer, const glm::mat4& pose, CubeStyle style,
                  Rgb line_colour) {
+    if (style == CubeStyle::lit) {
+        Scene scene = DiaryScene("lit-cube").still(framebuffer.width(), framebuffer.height());
+        scene.objects.front().model = pose;
+        DepthBuffer unused;  // one convex mesh: never prepared
+        render(framebuffer, scene, unused);
+        return;
+    }
     framebuffer.clear(kBlack);
     const OrthoCamera camera(framebuffer.width(), framebuffer.height());
     const Cube cube = Cube().posed(pose);
@@ -70,6 +83,7 @@ void render_cube(Framebuffer& framebuffer, const glm::mat4& pose, CubeStyle styl
     case CubeStyle::culled_wireframe:
         draw_edges(framebuffer, camera, cube, EdgeSelection::front_facing, line_colour);
         break;
+    case CubeStyle::lit: break;
     }
 }
 

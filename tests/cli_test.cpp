@@ -22,7 +22,8 @@ using test_support::ScratchDir;
 
 namespace {
 
-const std::vector<std::string> kApps{kStillCube, kAnimatedCube, kStillUnitCube, kWebpFrame};
+const std::vector<std::string> kApps{kStillCube, kAnimatedCube, kStillUnitCube, kWebpFrame,
+                                     test_support::kStillScene, test_support::kAnimatedScene};
 
 std::string name_of(const std::string& program) { return std::filesystem::path(program).filename().string(); }
 

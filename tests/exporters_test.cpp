@@ -123,7 +123,7 @@ TEST(AnimatedCubeApp, HonoursFramesFpsStyleSizeAndEffort) {
 
 TEST(ExporterApps, HelpTeachesTheOptionsAndSucceeds) {
     const ScratchDir dir;
-    for (const std::string& app : {kStillCube, kAnimatedCube, kStillUnitCube}) {
+    for (const std::string& app : {kStillCube, kAnimatedCube, kStillUnitCube, test_support::kStillScene, test_support::kAnimatedScene}) {
         const auto result = run(app, {"--help"}, dir.path());
         EXPECT_EQ(result.exit_code, 0);
         for (const char* option : {"--width", "--height", "--effort", "output", "Example"}) {
@@ -185,6 +185,10 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"EffortByNumber", kAnimatedCube, {"--effort", "0", "existing.webp"}, "--effort: '0' is not one of fast, default, max"},
         BadInput{"UnknownStyle", kStillCube, {"--style", "wire", "existing.webp"}, "--style: 'wire' is not one of filled, wireframe, culled-wireframe"},
         BadInput{"StyleByNumber", kAnimatedCube, {"--style", "2", "existing.webp"}, "--style: '2' is not one of filled"},
+        BadInput{"UnknownScene", test_support::kStillScene, {"--scene", "teapot", "existing.webp"}, "--scene: 'teapot' is not one of lit-cube, dodecahedron, orbit"},
+        BadInput{"SceneFramesBeyondTheLimit", test_support::kAnimatedScene, {"--frames", "10001", "existing.webp"}, "--frames: 10001 is out of range (expected 0..10000)"},
+        BadInput{"SceneSizeNotANumber", test_support::kAnimatedScene, {"--width", "8k", "existing.webp"}, "--width: '8k' is not an integer"},
+        BadInput{"SceneOutputIsADirectory", test_support::kStillScene, {"."}, "cannot write '.'", false},
         BadInput{"OutputTwice", kStillCube, {"-o", "a.webp", "existing.webp"}, "excludes"},
         BadInput{"MissingDirectory", kStillCube, {"missing/out.webp"}, "directory 'missing' does not exist", false},
         BadInput{"ParentIsAFile", kAnimatedCube, {"a-file/out.webp"}, "'a-file' is not a directory", false},

@@ -1,3 +1,4 @@
+#include <raster/diary_scenes.hpp>
 #include <raster/scenes.hpp>
 #include <raster/webp.hpp>
 
@@ -20,6 +21,7 @@ std::string style_name(CubeStyle style) {
     case CubeStyle::filled: return "filled";
     case CubeStyle::wireframe: return "wireframe";
     case CubeStyle::culled_wireframe: return "culled-wireframe";
+    case CubeStyle::lit: return "lit";
     }
     return "unknown";
 }
@@ -39,7 +41,7 @@ TEST(Golden, RadialSpokes) {
 }
 
 TEST(Golden, StillCubeInEachStyle) {
-    for (const CubeStyle style : {CubeStyle::filled, CubeStyle::wireframe, CubeStyle::culled_wireframe}) {
+    for (const CubeStyle style : {CubeStyle::filled, CubeStyle::wireframe, CubeStyle::culled_wireframe, CubeStyle::lit}) {
         Framebuffer image = scene_frame();
         raster::render_still_cube(image, style);
         EXPECT_TRUE(matches_snapshot(image, "still-cube/" + style_name(style)));
@@ -89,4 +91,43 @@ TEST(Golden, ReadmeAnimationsShowWhatTheExporterDrawsToday) {
         EXPECT_TRUE(test_support::matches_digests(digests, "animated-cube/" + style_name(style)))
             << "doc/images/" << file << ".webp is stale: cmake --build --preset release --target update-snapshots";
     }
+}
+
+TEST(Golden, EveryDiaryScenesStill) {
+    for (const raster::SceneInfo& info : raster::diary_scenes()) {
+        Framebuffer image = scene_frame();
+        raster::DepthBuffer depth;
+        raster::render(image, raster::DiaryScene(info.name).still(image.width(), image.height()), depth);
+        EXPECT_TRUE(matches_snapshot(image, "scenes/" + std::string(info.name)));
+    }
+}
+
+TEST(Golden, EveryDiaryScenesAnimationEveryTenthFrame) {
+    for (const raster::SceneInfo& info : raster::diary_scenes()) {
+        const raster::DiaryScene scene(info.name);
+        std::vector<std::string> digests;
+        Framebuffer image = scene_frame();
+        raster::DepthBuffer depth;
+        for (int frame = 0; frame < info.frames; frame += 10) {
+            raster::render(image, scene.frame(image.width(), image.height(), frame, info.frames), depth);
+            digests.push_back(test_support::digest_of(image));
+        }
+        EXPECT_TRUE(test_support::matches_digests(digests, "scenes/" + std::string(info.name)));
+    }
+}
+
+TEST(Golden, ReadmeTorusIsWhatAnimatedSceneDrawsToday) {
+    if (std::getenv("RASTER_UPDATE_SNAPSHOTS") != nullptr) GTEST_SKIP() << "update-snapshots rewrites it next";
+    const raster::DiaryScene torus("torus");
+    Framebuffer expected(320, 240);  // as update-snapshots renders it: 180 frames at 25 fps
+    raster::DepthBuffer depth;
+    int shown = 0;
+    raster::for_each_webp_frame(std::string(RASTER_IMAGES_DIR) + "/animated-scene.webp", [&](const raster::DecodedFrame& frame) {
+        raster::render(expected, torus.frame(320, 240, shown, 180), depth);
+        EXPECT_EQ(frame.image, expected) << "doc/images/animated-scene.webp is stale at frame " << shown
+                                         << ": cmake --build --preset release --target update-snapshots";
+        shown += frame.duration_ms / 40;  // libwebp merges identical neighbours
+        return frame.image == expected;
+    });
+    EXPECT_EQ(shown, 180);
 }

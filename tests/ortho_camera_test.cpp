@@ -1,5 +1,8 @@
 #include <raster/ortho_camera.hpp>
 
+#include <cmath>
+#include <string>
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 #include <limits>
 #include <stdexcept>
@@ -42,7 +45,7 @@ TEST(OrthoCamera, DepthDoesNotMoveAPointOnScreen) {
 }
 
 TEST(OrthoCamera, LooksAlongPositiveZ) {
-    EXPECT_EQ(OrthoCamera::direction(), glm::vec3(0, 0, 1));
+    EXPECT_EQ(OrthoCamera(8, 8).direction(), glm::vec3(0, 0, 1));
 }
 
 TEST(OrthoCamera, SnapsToTheNearestSubpixelWithHalvesUp) {
@@ -80,4 +83,57 @@ TEST(OrthoCamera, RejectsEmptyNegativeAndExtremeSizes) {
     }
     EXPECT_NO_THROW(OrthoCamera(1, 1));
     EXPECT_NO_THROW(OrthoCamera(raster::kMaxSubpixelCoordinate, raster::kMaxSubpixelCoordinate));
+}
+
+TEST(LookAtCamera, TheDefaultEyeRendersExactlyLikeTheFixedCamera) {
+    const OrthoCamera fixed(800, 600);
+    const OrthoCamera looking = OrthoCamera::look_at(800, 600, {0, 0, -1});
+    for (const glm::vec3 p : {glm::vec3(0.3F, -0.7F, 0.1F), glm::vec3(-1, 1, 5), glm::vec3(0.123F, 0.456F, -0.789F)}) {
+        EXPECT_EQ(looking.subpixel_from_world(p), fixed.subpixel_from_world(p));
+        EXPECT_EQ(looking.view_from_world(p), fixed.view_from_world(p));
+        // And both are the fixed camera's formula, centre + s (x, -y), bit for bit.
+        const glm::dvec2 formula(399.5 + 299.5 * double{p.x}, 299.5 - 299.5 * double{p.y});
+        EXPECT_EQ(fixed.screen_from_world(p), formula);
+    }
+    EXPECT_EQ(looking.direction(), fixed.direction());
+}
+
+TEST(LookAtCamera, BuildsALeftHandedBasisWithUpKeptUp) {
+    const OrthoCamera camera = OrthoCamera::look_at(101, 101, {1, 0, 0});  // from +X toward the origin
+    EXPECT_NEAR(glm::distance(camera.direction(), glm::vec3(-1, 0, 0)), 0.0F, 1e-7F);
+    // Looking along -X with +Y up, +Z is to the right: left-handed.
+    const glm::dvec3 view = camera.view_from_world({0, 0, 1});
+    EXPECT_NEAR(view.x, 1.0, 1e-12);
+    EXPECT_NEAR(view.y, 0.0, 1e-12);
+    EXPECT_NEAR(view.z, 1.0, 1e-12) << "depth is the distance from the eye along the view";
+    EXPECT_NEAR(camera.view_from_world({0, 1, 0}).y, 1.0, 1e-12);
+}
+
+TEST(LookAtCamera, EyeOnTheTargetOrOnTheUpAxisIsAClearError) {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const auto message = [](glm::vec3 eye) {
+        try {
+            (void)OrthoCamera::look_at(10, 10, eye);
+        } catch (const std::invalid_argument& error) {
+            return std::string(error.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_EQ(message({0, 0, 0}), "camera eye and target coincide");
+    EXPECT_EQ(message({0, 2, 0}), "camera looks straight along its up direction; move the eye off that axis");
+    EXPECT_EQ(message({0, -2, 0}), "camera looks straight along its up direction; move the eye off that axis");
+    EXPECT_EQ(message({nan, 0, -1}), "camera eye, target and up must be finite");
+}
+
+// An orbit over the pole: Gram-Schmidt fails only exactly on the axis; a hair away the basis is
+// still orthonormal and every point lands on a finite pixel.
+TEST(LookAtCamera, AnOrbitOverThePoleStaysFiniteUntilExactlyOnTheAxis) {
+    for (const double tilt : {1e-2, 1e-4, 1e-6}) {
+        const glm::vec3 eye(0.0F, static_cast<float>(std::cos(tilt)), static_cast<float>(-std::sin(tilt)));
+        const OrthoCamera camera = OrthoCamera::look_at(800, 600, eye);
+        EXPECT_NEAR(glm::length(camera.direction()), 1.0F, 1e-6F) << tilt;
+        EXPECT_NEAR(glm::dot(camera.direction(), glm::vec3(0, -1, 0)), 1.0F, 1e-3F) << tilt;
+        EXPECT_TRUE(camera.pixel_from_world({0.5F, 0.5F, 0.5F}).has_value()) << tilt;
+    }
+    EXPECT_THROW((void)OrthoCamera::look_at(800, 600, {0, 1, 0}), std::invalid_argument);
 }

@@ -18,8 +18,9 @@ done
 [ "$(git rev-parse v0.0.1)" = "$(git rev-parse v0.0.7)" ] || { echo "0.0.1 to 0.0.7 should share a commit"; exit 1; }
 for version in $versions; do
     case "$version" in 0.0.*) continue ;; esac
-    git log -1 --format=%s "v$version" | grep -q "^Release $version" ||
-        { echo "v$version is not on a 'Release $version' commit"; exit 1; }
+    subject=$(git log -1 --format=%s "v$version")
+    [[ "$subject" == "Release $version"* || "$subject" =~ \(releases\ [0-9.]+\ to\ [0-9.]+\) ]] ||
+        { echo "v$version is not on a 'Release $version' commit nor on one naming a range"; exit 1; }
 done
 [ -z "$(tools/tag-releases.sh)" ] || { echo "a second run should tag nothing"; exit 1; }
 echo "tagged: $(git tag -l | tr '\n' ' ')"

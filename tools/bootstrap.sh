@@ -9,7 +9,8 @@ usage: tools/bootstrap.sh COMMAND
                      (default out/animated-cube.webp, relative to where you are)
   test               build in Release and run every test
   sanitize           build with AddressSanitizer and UndefinedBehaviorSanitizer and run every test
-  fuzz [SECONDS]     build the libFuzzer target with clang and fuzz fill and line (default 60 s)
+  fuzz [SECONDS]     build the libFuzzer targets with clang; fuzz fill and line, then the
+                     mesh pipeline, for SECONDS each (default 60)
   lab                measure every raster method and redraw the charts in doc/lab/
   -h, --help         print this help
 Each command first installs the Debian 12 packages it needs that are missing (apt-get, with
@@ -69,8 +70,10 @@ fuzz)
     seconds="${2:-60}"
     install_missing "${base_packages[@]}" clang libclang-rt-14-dev
     build fuzz
-    mkdir -p build/fuzz/corpus
-    build/fuzz/lab/fuzz_raster -max_total_time="$seconds" -print_final_stats=1 build/fuzz/corpus
+    for target in fuzz_raster fuzz_mesh; do
+        mkdir -p "build/fuzz/corpus/$target"
+        build/fuzz/lab/$target -max_total_time="$seconds" -print_final_stats=1 "build/fuzz/corpus/$target"
+    done
     ;;
 lab)
     install_missing "${base_packages[@]}" gnuplot-nox

@@ -5,9 +5,10 @@ set -euo pipefail
 usage() {
     cat <<'TXT'
 usage: tools/tag-releases.sh [--dry-run]
-  Tags each commit whose subject starts with "Release X.Y.Z" as vX.Y.Z. Releases 0.0.1 to
-  0.0.7 share one commit, whose subject says "(releases 0.0.1 to 0.0.7)"; each of them gets
-  its own tag on it. Versions come from CHANGELOG.md. Existing tags are never moved.
+  Tags each commit whose subject starts with "Release X.Y.Z" as vX.Y.Z. A commit whose subject
+  says "(releases A to B)" gets a tag for every CHANGELOG version from A to B: 0.0.1 to 0.0.7
+  share one commit, and so do 0.1.2 to 0.1.11. Versions come from CHANGELOG.md. Existing tags
+  are never moved.
   --dry-run  print what would be tagged, change nothing
 TXT
 }
@@ -41,9 +42,7 @@ tag() {  # version commit
 }
 
 while read -r commit subject; do
-    if [[ "$subject" =~ ^Release\ ([0-9]+\.[0-9]+\.[0-9]+) ]]; then
-        tag "${BASH_REMATCH[1]}" "$commit"
-    elif [[ "$subject" =~ \(releases\ ([0-9]+\.[0-9]+\.[0-9]+)\ to\ ([0-9]+\.[0-9]+\.[0-9]+)\) ]]; then
+    if [[ "$subject" =~ \(releases\ ([0-9]+\.[0-9]+\.[0-9]+)\ to\ ([0-9]+\.[0-9]+\.[0-9]+)\) ]]; then
         first="${BASH_REMATCH[1]}" last="${BASH_REMATCH[2]}"
         for version in "${versions[@]}"; do
             if [ "$(printf '%s\n' "$first" "$version" | sort -V | head -1)" = "$first" ] &&
@@ -51,5 +50,7 @@ while read -r commit subject; do
                 tag "$version" "$commit"
             fi
         done
+    elif [[ "$subject" =~ ^Release\ ([0-9]+\.[0-9]+\.[0-9]+) ]]; then
+        tag "${BASH_REMATCH[1]}" "$commit"
     fi
 done < <(git log --reverse --format='%H %s' HEAD)

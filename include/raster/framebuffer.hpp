@@ -42,6 +42,8 @@ public:
 
     // Packed R, G, B bytes, row after row with no padding.
     [[nodiscard]] std::span<const std::uint8_t> bytes() const noexcept { return bytes_; }
+    // The same bytes for primitives that write whole spans; they must stay inside the buffer.
+    [[nodiscard]] std::uint8_t* pixels() noexcept { return bytes_.data(); }
 
     friend bool operator==(const Framebuffer&, const Framebuffer&) = default;
 

@@ -1,0 +1,33 @@
+#include "exporter.hpp"
+#include "scene_option.hpp"
+
+int main(int argc, char** argv) {
+    CLI::App app("Renders the animation of one diary scene (0.0.8 to 0.0.17) to a lossless animated "
+                 "WebP that loops forever.",
+                 "animated-scene");
+    app.footer(scene_list() +
+               "\nExamples:\n"
+               "  animated-scene                           # the tumbling torus, 360 frames, 7.2 s\n"
+               "  animated-scene --scene orbit --effort fast orbit.webp");
+    ExportOptions options{"animated-scene.webp"};
+    add_export_options(app, options);
+    std::string name;
+    add_scene_option(app, name);
+    int frames = 0;
+    add_integer_option(app, "--frames", frames, 0, 10000,
+                       "Frames in the whole clip, 1..10000; 0 (the default) takes the scene's own count");
+    int fps = 1000 / raster::kFrameSpacingMs;
+    add_fps_option(app, fps);
+    bool automatic = false;
+    add_detail_option(app, automatic);
+
+    return run_exporter(app, options, argc, argv, [&] {
+        const raster::DiaryScene scene(name);
+        const int count = frames > 0 ? frames : scene.info().frames;
+        const raster::DetailPlan plan = automatic ? plan_for(scene, options.width, options.height, count) : raster::DetailPlan{};
+        raster::DepthBuffer depth;
+        return export_animation(app, options, count, fps, [&](raster::Framebuffer& frame, int index) {
+            raster::render(frame, raster::with_detail(scene.frame(frame.width(), frame.height(), index, count), plan), depth);
+        }) + describe(plan);
+    });
+}

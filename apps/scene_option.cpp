@@ -1,0 +1,55 @@
+#include "scene_option.hpp"
+
+#include "exporter.hpp"
+
+#include <vector>
+
+void add_scene_option(CLI::App& app, std::string& scene) {
+    std::vector<std::string> names;
+    for (const raster::SceneInfo& info : raster::diary_scenes()) names.emplace_back(info.name);
+    scene = names.back();
+    app.add_option("--scene", scene, "Which scene of the diary to render (listed below)")
+        ->transform(one_of(names))
+        ->option_text("NAME [" + scene + "]");
+}
+
+std::string scene_list() {
+    std::string list = "Scenes (the original release each one re-creates):\n";
+    for (const raster::SceneInfo& info : raster::diary_scenes()) {
+        std::string name(info.name);
+        std::string release(info.release);
+        name.resize(16, ' ');
+        release.resize(8, ' ');
+        list += "  " + name + release + std::string(info.title) + "\n";
+    }
+    return list;
+}
+
+void add_detail_option(CLI::App& app, bool& automatic) {
+    add_choice_option<bool>(app, "--detail", automatic, {{"diary", false}, {"auto", true}},
+                            "diary: each release's own mesh and shading; auto: per sphere or torus, the "
+                            "coarsest mesh whose outline is within half a pixel of the true one and the "
+                            "cheapest shading within one 8-bit level of the exact surface",
+                            "diary");
+}
+
+raster::DetailPlan plan_for(const raster::DiaryScene& scene, int width, int height, int frames) {
+    std::vector<raster::Scene> samples;
+    if (frames == 0) {
+        samples.push_back(scene.still(width, height));
+    } else {
+        for (int i = 0; i < frames; i += 30) samples.push_back(scene.frame(width, height, i, frames));
+    }
+    return raster::plan_detail(samples);
+}
+
+std::string describe(const raster::DetailPlan& plan) {
+    static constexpr const char* kMethods[] = {"flat", "Gouraud", "Phong"};
+    std::string text;
+    for (const auto& choice : plan.choices) {
+        if (!choice) continue;
+        text += (text.empty() ? ", detail " : " and ") + std::string("level ") + std::to_string(choice->level) + " " +
+                kMethods[static_cast<int>(choice->shading)];
+    }
+    return text;
+}

@@ -1,0 +1,20 @@
+#pragma once
+
+#include <raster/auto_detail.hpp>
+#include <raster/diary_scenes.hpp>
+
+#include <CLI/CLI.hpp>
+#include <string>
+
+// --scene NAME, any of the diary's scenes, the latest by default; the help lists them all.
+void add_scene_option(CLI::App& app, std::string& scene);
+// The scene list for a footer: one line each, "  torus           0.0.17  a Phong-shaded torus ...".
+std::string scene_list();
+
+// --detail diary|auto: the release's own meshes and shading, or the cheapest that the image's
+// pixels cannot tell from the true surface.
+void add_detail_option(CLI::App& app, bool& automatic);
+// Plans automatic detail from every 30th frame of a clip (or the one still).
+raster::DetailPlan plan_for(const raster::DiaryScene& scene, int width, int height, int frames);
+// ", detail torus level 6 (Phong)" for the report line; empty when nothing was chosen.
+std::string describe(const raster::DetailPlan& plan);

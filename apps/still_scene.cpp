@@ -1,0 +1,26 @@
+#include "exporter.hpp"
+#include "scene_option.hpp"
+
+int main(int argc, char** argv) {
+    CLI::App app("Renders the still of one diary scene (0.0.8 to 0.0.17) to a lossless WebP.", "still-scene");
+    app.footer(scene_list() +
+               "\nExamples:\n"
+               "  still-scene                              # the torus -> still-scene.webp\n"
+               "  still-scene --scene two-spheres spheres.webp\n"
+               "  still-scene --detail auto --width 1920 --height 1080 torus.webp");
+    ExportOptions options{"still-scene.webp"};
+    add_export_options(app, options);
+    std::string name;
+    add_scene_option(app, name);
+    bool automatic = false;
+    add_detail_option(app, automatic);
+
+    return run_exporter(app, options, argc, argv, [&] {
+        const raster::DiaryScene scene(name);
+        const raster::DetailPlan plan = automatic ? plan_for(scene, options.width, options.height, 0) : raster::DetailPlan{};
+        return export_still(app, options, [&](raster::Framebuffer& frame) {
+            raster::DepthBuffer depth;
+            raster::render(frame, raster::with_detail(scene.still(frame.width(), frame.height()), plan), depth);
+        }) + describe(plan);
+    });
+}

@@ -1,0 +1,28 @@
+#pragma once
+
+#include <raster/depth_buffer.hpp>
+#include <raster/framebuffer.hpp>
+#include <raster/mesh.hpp>
+#include <raster/ortho_camera.hpp>
+#include <raster/shaders.hpp>
+
+#include <cstddef>
+
+namespace raster {
+
+// Where a mesh is drawn: the colour buffer and, for scenes that need it, a prepared depth
+// buffer of the same size (nullptr: no depth test).
+struct RenderTarget {
+    Framebuffer& colour;
+    DepthBuffer* depth = nullptr;
+};
+
+// Draws the facets of a posed mesh that face the camera (positive snapped area, the numbers
+// the fill uses) through the exact convex fill, the shader's Varying interpolated at each
+// covered pixel centre. With a depth buffer a pixel is kept unless something nearer is already
+// there; ties go to the later facet (doc/conventions.md#depth). Returns the facets drawn.
+std::size_t draw_mesh(RenderTarget target, const OrthoCamera& camera, const Mesh& mesh, const FlatShader& shader);
+std::size_t draw_mesh(RenderTarget target, const OrthoCamera& camera, const Mesh& mesh, const GouraudShader& shader);
+std::size_t draw_mesh(RenderTarget target, const OrthoCamera& camera, const Mesh& mesh, const PhongShader& shader);
+
+}  // namespace raster

@@ -1,0 +1,167 @@
+#pragma once
+
+#include <raster/depth_buffer.hpp>
+#include <raster/fill.hpp>
+#include <raster/framebuffer.hpp>
+
+#include <raster/mesh.hpp>
+#include <raster/ortho_camera.hpp>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+// The one rasterizer behind every shader: exact coverage from rasterize_convex, attributes
+// interpolated linearly in screen space (exact for an orthographic view).
+namespace raster::detail {
+
+// View depths beyond this (world units) are refused, so that depth arithmetic stays finite.
+inline constexpr double kMaxViewDepth = 1e18;
+
+// How a view depth is kept: the product stores the float itself; the lab also tries fixed-point
+// codes (kept in the same float buffer, exact up to 24 bits).
+struct FloatDepth {
+    [[nodiscard]] float operator()(float depth) const noexcept { return depth; }
+};
+
+template <typename Varying>
+struct ShadedCorner {
+    SubpixelPoint at;
+    float depth;
+    Varying varying;
+};
+
+// The barycentric weight of one corner as a plane over pixel coordinates (i, j), measured from
+// corner 0 so that small triangles far from the origin keep their precision.
+struct WeightPlane {
+    double x0, y0;  // corner 0, subpixels
+    double per_subpixel_x, per_subpixel_y;
+    [[nodiscard]] double at(double i, double j) const noexcept {
+        return (i * kSubpixelOne - x0) * per_subpixel_x + (j * kSubpixelOne - y0) * per_subpixel_y;
+    }
+    [[nodiscard]] double per_pixel_x() const noexcept { return per_subpixel_x * kSubpixelOne; }
+};
+
+// Weights of corners 1 and 2: w1 = ((P - p0) x b) / (a x b), w2 = (a x (P - p0)) / (a x b),
+// with a = p1 - p0 and b = p2 - p0; a x b is the exact twice_signed_area, never zero here.
+inline std::array<WeightPlane, 2> weight_planes(SubpixelPoint p0, SubpixelPoint p1, SubpixelPoint p2,
+                                                std::int64_t twice_area) noexcept {
+    const double x0 = p0.x, y0 = p0.y;
+    const double ax = p1.x - x0, ay = p1.y - y0, bx = p2.x - x0, by = p2.y - y0;
+    const auto cross = static_cast<double>(twice_area);
+    return {WeightPlane{x0, y0, by / cross, -bx / cross}, WeightPlane{x0, y0, -ay / cross, ax / cross}};
+}
+
+// Fills one triangle facing the camera. Varying needs +, - and * float; corner 0 anchors the
+// interpolation (v0 + w1 (v1 - v0) + w2 (v2 - v0)), so equal corners give that value exactly.
+template <typename Shader, typename DepthFormat = FloatDepth>
+void shade_triangle(Framebuffer& colour, DepthBuffer* depth,
+                    const std::array<ShadedCorner<typename Shader::Varying>, 3>& corners, const Shader& shader,
+                    DepthFormat stored = {}) {
+    using Varying = typename Shader::Varying;
+    const std::array<SubpixelPoint, 3> points{corners[0].at, corners[1].at, corners[2].at};
+    const std::int64_t twice_area = twice_signed_area(points);
+    if (twice_area == 0) return;  // covers nothing, and the weights would divide by zero
+    const std::array<WeightPlane, 2> planes = weight_planes(points[0], points[1], points[2], twice_area);
+    const WeightPlane& w1 = planes[0];  // not a structured binding: clang 14 cannot capture those
+    const WeightPlane& w2 = planes[1];
+    const Varying base = corners[0].varying;
+    const Varying along1 = corners[1].varying - base;
+    const Varying along2 = corners[2].varying - base;
+    const Varying step = along1 * static_cast<float>(w1.per_pixel_x()) + along2 * static_cast<float>(w2.per_pixel_x());
+    const double z0 = corners[0].depth;
+    const double z1 = corners[1].depth - z0, z2 = corners[2].depth - z0;
+    const auto z_step = static_cast<float>(z1 * w1.per_pixel_x() + z2 * w2.per_pixel_x());
+    std::uint8_t* const pixels = colour.pixels();
+    const std::size_t width = static_cast<std::size_t>(colour.width());
+
+    rasterize_convex(points, {0, 0, colour.width(), colour.height()}, [&](Span span) {
+        const double i = span.x_begin, j = span.y;
+        const double a = w1.at(i, j), b = w2.at(i, j);
+        Varying varying = base + along1 * static_cast<float>(a) + along2 * static_cast<float>(b);
+        const auto z_start = static_cast<float>(z0 + z1 * a + z2 * b);
+        std::uint8_t* out = pixels + (static_cast<std::size_t>(span.y) * width + static_cast<std::size_t>(span.x_begin)) * 3;
+        float* nearest = depth != nullptr ? depth->row(span.y) + span.x_begin : nullptr;
+        for (int k = 0; k < span.x_end - span.x_begin; ++k, out += 3, varying = varying + step) {
+            if (nearest != nullptr) {
+                const float z = stored(z_start + z_step * static_cast<float>(k));
+                if (z > nearest[k]) continue;  // something nearer is already there
+                nearest[k] = z;
+            }
+            const Rgb c = shader.pixel(varying);
+            out[0] = c.r;
+            out[1] = c.g;
+            out[2] = c.b;
+        }
+    });
+}
+
+struct ScreenVertex {
+    std::optional<SubpixelPoint> at;  // nothing when not finite or too far away
+    float depth;
+};
+
+// The vertex stage: every position projected once, every corner's Varying made once per vertex
+// or, for facet normals, once per facet.
+template <typename Shader, typename DepthFormat = FloatDepth>
+std::size_t draw_facets(Framebuffer& colour, DepthBuffer* depth_buffer, const OrthoCamera& camera, const Mesh& mesh,
+                        const Shader& shader, DepthFormat stored = {}) {
+    using Varying = typename Shader::Varying;
+    if (depth_buffer != nullptr && (depth_buffer->width() != colour.width() || depth_buffer->height() != colour.height())) {
+        throw std::invalid_argument("depth buffer and framebuffer differ in size");
+    }
+    if (mesh.normals.size() != mesh.positions.size()) {
+        throw std::invalid_argument("mesh has " + std::to_string(mesh.normals.size()) + " normals for " +
+                                    std::to_string(mesh.positions.size()) + " positions");
+    }
+    for (const Facet& facet : mesh.facets) {
+        for (const std::uint32_t corner : facet.corners) {
+            if (corner >= mesh.positions.size()) throw std::invalid_argument("mesh facet names a missing vertex");
+        }
+    }
+    std::vector<ScreenVertex> screen;
+    screen.reserve(mesh.positions.size());
+    for (const glm::vec3& position : mesh.positions) {
+        const glm::dvec3 view = camera.view_from_world(position);
+        // A depth beyond the limit is treated like a position too far away: the facet is skipped.
+        const bool usable_depth = std::abs(view.z) <= kMaxViewDepth;
+        screen.push_back({usable_depth ? snap_to_subpixel(camera.screen_from_view(view)) : std::nullopt,
+                          static_cast<float>(view.z)});
+    }
+    const bool per_facet = Shader::kFacetNormal || mesh.surface == Surface::faceted;
+    std::vector<Varying> varyings;
+    if (!per_facet) {
+        varyings.reserve(mesh.positions.size());
+        for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+            varyings.push_back(shader.vertex({mesh.positions[i], mesh.normals[i]}));
+        }
+    }
+    std::size_t drawn = 0;
+    for (const Facet& facet : mesh.facets) {
+        std::array<ShadedCorner<Varying>, 3> corners{};
+        bool on_screen = true;
+        for (std::size_t k = 0; k < 3 && on_screen; ++k) {
+            const ScreenVertex& vertex = screen[facet.corners[k]];
+            on_screen = vertex.at.has_value();
+            if (on_screen) corners[k].at = *vertex.at, corners[k].depth = vertex.depth;
+        }
+        if (!on_screen) continue;
+        const std::array<SubpixelPoint, 3> points{corners[0].at, corners[1].at, corners[2].at};
+        if (twice_signed_area(points) <= 0) continue;  // facing away, or seen edge-on
+        if (per_facet) {
+            const Varying shared = shader.vertex({mesh.positions[facet.corners[0]], facet.normal});
+            for (auto& corner : corners) corner.varying = shared;
+        } else {
+            for (std::size_t k = 0; k < 3; ++k) corners[k].varying = varyings[facet.corners[k]];
+        }
+        shade_triangle(colour, depth_buffer, corners, shader, stored);
+        ++drawn;
+    }
+    return drawn;
+}
+
+}  // namespace raster::detail

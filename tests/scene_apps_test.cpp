@@ -1,0 +1,103 @@
+// still-scene and animated-scene as a user runs them.
+#include <raster/diary_scenes.hpp>
+#include <raster/scenes.hpp>
+#include <raster/webp.hpp>
+
+#include "support/scratch.hpp"
+
+#include <gtest/gtest.h>
+
+using raster::Framebuffer;
+using test_support::kAnimatedScene;
+using test_support::kStillScene;
+using test_support::run;
+using test_support::ScratchDir;
+
+namespace {
+
+Framebuffer still_of(std::string_view name, int width, int height) {
+    Framebuffer image(width, height);
+    raster::DepthBuffer depth;
+    raster::render(image, raster::DiaryScene(name).still(width, height), depth);
+    return image;
+}
+
+}  // namespace
+
+TEST(StillSceneApp, WritesTheTorusByDefault) {
+    const ScratchDir dir;
+    const auto result = run(kStillScene, {}, dir.path());
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    EXPECT_EQ(result.out.rfind("Wrote still-scene.webp: 800x600 still, ", 0), 0U) << result.out;
+    EXPECT_EQ(raster::read_webp(dir / "still-scene.webp").frames.at(0).image, still_of("torus", 800, 600));
+}
+
+TEST(StillSceneApp, EverySceneAtAnySizeDecodesToTheInMemoryRender) {
+    const ScratchDir dir;
+    for (const raster::SceneInfo& info : raster::diary_scenes()) {
+        const std::string name(info.name);
+        const auto result = run(kStillScene, {"--scene", name, "--width", "120", "--height", "90", "--effort", "fast", "s.webp"}, dir.path());
+        ASSERT_EQ(result.exit_code, 0) << name << ": " << result.err;
+        EXPECT_EQ(raster::read_webp(dir / "s.webp").frames.at(0).image, still_of(info.name, 120, 90)) << name;
+    }
+}
+
+TEST(AnimatedSceneApp, WritesTheScenesOwnFrameCountTwentyMillisecondsApart) {
+    const ScratchDir dir;
+    const auto result = run(kAnimatedScene, {"--scene", "orbit", "--width", "64", "--height", "48", "--effort", "fast"}, dir.path());
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    EXPECT_NE(result.out.find("Wrote animated-scene.webp: 64x48, 720 frames, 14400 ms"), std::string::npos) << result.out;
+    const raster::DecodedWebp decoded = raster::read_webp(dir / "animated-scene.webp");
+    const raster::DiaryScene orbit("orbit");
+    Framebuffer expected(64, 48);
+    raster::DepthBuffer depth;
+    int shown = 0;
+    for (const raster::DecodedFrame& frame : decoded.frames) {
+        ASSERT_EQ(frame.start_ms, shown * 20);
+        raster::render(expected, orbit.frame(64, 48, shown, 720), depth);
+        ASSERT_EQ(frame.image, expected) << "frame " << shown;
+        shown += frame.duration_ms / 20;  // libwebp merges identical neighbours
+    }
+    EXPECT_EQ(shown, 720);
+}
+
+TEST(AnimatedSceneApp, HonoursFramesAndFps) {
+    const ScratchDir dir;
+    const auto result = run(kAnimatedScene, {"--frames", "6", "--fps", "10", "--width", "80", "--height", "60", "t.webp"}, dir.path());
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    const raster::DecodedWebp decoded = raster::read_webp(dir / "t.webp");
+    ASSERT_EQ(decoded.frames.size(), 6U);
+    const raster::DiaryScene torus("torus");
+    Framebuffer expected(80, 60);
+    raster::DepthBuffer depth;
+    for (int i = 0; i < 6; ++i) {
+        EXPECT_EQ(decoded.frames[static_cast<std::size_t>(i)].start_ms, i * 100);
+        raster::render(expected, torus.frame(80, 60, i, 6), depth);
+        EXPECT_EQ(decoded.frames[static_cast<std::size_t>(i)].image, expected) << "frame " << i;
+    }
+}
+
+TEST(SceneApps, HelpListsEverySceneWithTheReleaseItReCreates) {
+    const ScratchDir dir;
+    for (const std::string& app : {kStillScene, kAnimatedScene}) {
+        const auto result = run(app, {"--help"}, dir.path());
+        EXPECT_EQ(result.exit_code, 0);
+        for (const raster::SceneInfo& info : raster::diary_scenes()) {
+            const std::string line = "  " + std::string(info.name);
+            const std::size_t at = result.out.find(line + " ");
+            ASSERT_NE(at, std::string::npos) << app << " lacks " << info.name;
+            EXPECT_NE(result.out.substr(at, 60).find(info.release), std::string::npos) << info.name;
+        }
+        EXPECT_NE(result.out.find("--scene NAME [torus]"), std::string::npos) << result.out;
+    }
+}
+
+TEST(CubeApps, LitStyleIsTheDiarysLitCube) {
+    const ScratchDir dir;
+    const auto result = run(test_support::kStillCube, {"--style", "lit", "--width", "100", "--height", "80", "lit.webp"}, dir.path());
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    Framebuffer expected(100, 80);
+    raster::render_still_cube(expected, raster::CubeStyle::lit);
+    EXPECT_EQ(raster::read_webp(dir / "lit.webp").frames.at(0).image, expected);
+    EXPECT_EQ(expected, still_of("lit-cube", 100, 80));
+}
