@@ -51,7 +51,7 @@ raster::Mesh soup(FuzzedDataProvider& input) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     FuzzedDataProvider input(data, size);
-    raster::Scene scene{raster::OrthoCamera(kWidth, kHeight), {1, 2, 3}, {}, {}};
+    raster::Scene scene{raster::OrthoCamera(kWidth, kHeight), {1, 2, 3}, {}, {}, {}};
     if (input.ConsumeBool()) {
         try {
             scene.camera = raster::OrthoCamera::look_at(kWidth, kHeight, any_vector(input), any_vector(input), any_vector(input));

@@ -8,12 +8,13 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <utility>
 #include <glm/ext/matrix_transform.hpp>
 
 namespace raster {
 namespace {
 
-constexpr std::array<SceneInfo, 10> kScenes{{
+constexpr std::array<SceneInfo, 15> kScenes{{
     {"lit-cube", "0.0.8", "the tumbling cube lit by one light, flat shaded", 360},
     {"dodecahedron", "0.0.9", "a tumbling dodecahedron, the first triangle mesh", 360},
     {"orbit", "0.0.10", "the camera orbits the dodecahedron, then holds still", 720},
@@ -24,16 +25,26 @@ constexpr std::array<SceneInfo, 10> kScenes{{
     {"phong-sphere", "0.0.15", "per-pixel (Phong) normals: a round highlight", 720},
     {"two-spheres", "0.0.16", "two spheres, a depth buffer, one circle of the camera", 720},
     {"torus", "0.0.17", "a Phong-shaded torus(48, 32) tumbling", 360},
+    {"materials", "0.1.0", "the torus in linear light, its palette on grey", 360},
+    {"three-lights", "0.1.1", "three directional lights summed on the torus", 360},
+    {"point-lights", "0.1.6", "one directional and two point lights on the torus", 360},
+    {"point-light", "0.1.6", "a point light circling over a ground quad", 360},
+    {"shaders", "0.1.7", "Phong (left) against Gouraud (right), side by side", 360},
 }};
 
 enum SceneId { kLitCube, kDodecahedron, kOrbit, kFacetedSphere, kSmoothSphere, kGlossySphere, kSquash,
-               kPhongSphere, kTwoSpheres, kTorus };
+               kPhongSphere, kTwoSpheres, kTorus, kMaterials, kThreeLights, kPointLights, kPointLight, kShaders };
 // The switches below go by position in kScenes: these keep the two lists in step.
 static_assert(kScenes[kLitCube].name == "lit-cube" && kScenes[kDodecahedron].name == "dodecahedron" &&
               kScenes[kOrbit].name == "orbit" && kScenes[kFacetedSphere].name == "faceted-sphere" &&
               kScenes[kSmoothSphere].name == "smooth-sphere" && kScenes[kGlossySphere].name == "glossy-sphere" &&
               kScenes[kSquash].name == "squash" && kScenes[kPhongSphere].name == "phong-sphere" &&
-              kScenes[kTwoSpheres].name == "two-spheres" && kScenes[kTorus].name == "torus");
+              kScenes[kTwoSpheres].name == "two-spheres" && kScenes[kTorus].name == "torus" &&
+              kScenes[kMaterials].name == "materials" && kScenes[kThreeLights].name == "three-lights" &&
+              kScenes[kPointLights].name == "point-lights" && kScenes[kPointLight].name == "point-light" &&
+              kScenes[kShaders].name == "shaders");
+// The scenes of the diary's Phase 2 (0.1.0 on) light in linear colour.
+constexpr bool is_phase2(std::ptrdiff_t id) { return id >= kMaterials; }
 
 constexpr Rgb kShapeColour{52, 110, 210};   // #346ED2, the diary's blue
 constexpr Rgb kSecondColour{210, 90, 52};   // the smaller sphere of 0.0.16
@@ -43,6 +54,38 @@ constexpr glm::vec3 kLowSun{1.0F, 0.5F, -1.0F};
 constexpr glm::vec3 kHighLeftLamp{-10.0F, 10.0F, -10.0F};
 constexpr glm::vec3 kStillEye{0.1F, 0.4F, -1.0F};
 constexpr float kOrbitHeight = 0.2F;
+
+// Phase 2: the three.js geometry browser's palette and background.
+constexpr Rgb kGrey{0x44, 0x44, 0x44};
+constexpr Rgb kEmissive{0x07, 0x25, 0x34};
+constexpr Rgb kDiffuse{0x15, 0x62, 0x89};
+constexpr Rgb kFirstSpecular{0x11, 0x11, 0x11};  // three.js's default, until 0.1.6 raised it
+constexpr Rgb kSpecular{0x44, 0x44, 0x44};
+constexpr Rgb kBlack{0, 0, 0};
+constexpr Rgb kGold{0xFF, 0xD7, 0x00};
+constexpr float kPhongShininess = 30.0F;
+constexpr Falloff kDiaryFalloff{0.5F, 0.0F, 1.0F};
+constexpr glm::vec3 kTorusEye{0.0F, 0.5F, -1.0F};
+constexpr float kLampHeight = -0.5F;
+constexpr float kLampCircle = 0.45F;  // ours: the diary's still has the lamp at the centre
+
+// The lights of each Phase 2 release, added to a scene.
+void add_phase2_lights(Scene& scene, std::ptrdiff_t id) {
+    if (id == kMaterials) {
+        scene.lights = {{{1.0F, 2.0F, -1.0F}, 1.0F}};
+    } else if (id == kThreeLights) {
+        // three.js's three lights, z flipped into our left-handed world; its intensity 3 under a
+        // Lambert term divided by pi is about 1 in the diary's formula, which has no pi.
+        scene.lights = {{{0.0F, 2.0F, 0.0F}, 1.0F}, {{1.0F, 2.0F, -1.0F}, 1.0F}, {{-1.0F, -2.0F, 1.0F}, 1.0F}};
+    } else {  // 0.1.6 on: one directional light from above and two point lights at the corners
+        scene.lights = {{{0.0F, 2.0F, 0.0F}, 0.5F}};
+        scene.point_lights = {{{1.0F, 2.0F, -1.0F}, 3.0F, kDiaryFalloff}, {{-1.0F, -2.0F, 1.0F}, 3.0F, kDiaryFalloff}};
+    }
+}
+
+PhongMaterial torus_material(std::ptrdiff_t id) {
+    return PhongMaterial::from_srgb(kEmissive, kDiffuse, id < kPointLights ? kFirstSpecular : kSpecular, kPhongShininess);
+}
 
 glm::mat4 scale(glm::vec3 s) { return glm::scale(glm::mat4(1.0F), s); }
 glm::mat4 scale(float s) { return scale(glm::vec3(s)); }
@@ -76,7 +119,7 @@ glm::mat4 squash(double u, float wide, float low) {
 }
 
 Scene lit_scene(OrthoCamera camera, glm::vec3 light) {
-    return Scene{camera, Rgb{0, 0, 0}, {DirectionalLight{light}}, {}};
+    return Scene{camera, Rgb{0, 0, 0}, {DirectionalLight{light}}, {}, {}};
 }
 
 glm::mat4 placed(glm::vec3 centre, float radius) { return glm::translate(glm::mat4(1.0F), centre) * scale(radius); }
@@ -117,11 +160,21 @@ DiaryScene::DiaryScene(std::string_view name) : info_(nullptr), analytic_(ShapeK
         ground_ = std::make_shared<const Mesh>(
             ground_quad({-1.0F, 0.0F, -1.0F}, {1.0F, 0.0F, -1.0F}, {1.0F, 0.0F, 1.0F}, {-1.0F, 0.0F, 1.0F}));
         break;
-    case kTorus: shape_ = std::make_shared<const Mesh>(torus(48, 32)); break;
+    case kTorus:
+    case kMaterials:
+    case kThreeLights:
+    case kPointLights:
+    case kShaders: shape_ = std::make_shared<const Mesh>(torus(48, 32)); break;
+    case kPointLight:  // the lamp's marker over the diary's trapezoid of ground
+        shape_ = std::make_shared<const Mesh>(sphere(2));
+        ground_ = std::make_shared<const Mesh>(ground_quad({-0.9F, -0.7F, -0.9F}, {0.9F, -0.7F, -0.9F},
+                                                           {0.6F, -0.7F, 0.9F}, {-0.6F, -0.7F, 0.9F}));
+        break;
     default: shape_ = std::make_shared<const Mesh>(sphere(4)); break;
     }
     if (!still_shape_) still_shape_ = shape_;
-    analytic_ = info_ - kScenes.data() == kTorus ? ShapeKind::torus : ShapeKind::sphere;
+    const auto id = info_ - kScenes.data();
+    analytic_ = id >= kTorus && id != kPointLight ? ShapeKind::torus : ShapeKind::sphere;
 }
 
 Scene DiaryScene::still(int width, int height) const { return tagged(untagged_still(width, height)); }
@@ -139,6 +192,7 @@ Scene DiaryScene::tagged(Scene scene) const {
 }
 
 Scene DiaryScene::untagged_still(int width, int height) const {
+    if (is_phase2(info_ - kScenes.data())) return phase2(width, height, std::nullopt);
     const OrthoCamera front(width, height);
     const OrthoCamera raised = OrthoCamera::look_at(width, height, kStillEye);
     const Material matte = Material::matte(kShapeColour, 0.25F);
@@ -189,6 +243,7 @@ Scene DiaryScene::untagged_still(int width, int height) const {
 }
 
 Scene DiaryScene::untagged_frame(int width, int height, int index, int count) const {
+    if (is_phase2(info_ - kScenes.data())) return phase2(width, height, tumble_angle(index, count));
     const double turn = static_cast<double>(index) / std::max(count, 1);
     const Material matte = Material::matte(kShapeColour, 0.25F);
     const Material shiny = Material::shiny(kShapeColour, 0.15F, 100.0F);
@@ -238,6 +293,36 @@ Scene DiaryScene::untagged_frame(int width, int height, int index, int count) co
         return scene;
     }
     }
+}
+
+// The stills (no angle) and frames of Phase 2: the torus scenes tumble as 0.0.17's did, and the
+// point light circles its ground.
+Scene DiaryScene::phase2(int width, int height, std::optional<float> angle) const {
+    const auto id = info_ - kScenes.data();
+    Scene scene{OrthoCamera::look_at(width, height, kTorusEye), kGrey, {}, {}, {}};
+    if (id == kPointLight) {
+        scene.camera = OrthoCamera::look_at(width, height, {0.0F, 0.25F, -1.0F});
+        const float a = angle.value_or(0.0F);
+        const glm::vec3 lamp = angle ? glm::vec3(kLampCircle * std::sin(a), kLampHeight, -kLampCircle * std::cos(a))
+                                     : glm::vec3(0.0F, kLampHeight, 0.0F);
+        scene.point_lights = {{lamp, 1.0F, kDiaryFalloff}};
+        scene.objects.push_back({ground_, glm::mat4(1.0F), PhongMaterial::from_srgb(kBlack, kDiffuse, kBlack, std::nullopt),
+                                 ShadingMethod::phong});
+        scene.objects.push_back({shape_, placed(lamp, 0.04F), PhongMaterial::from_srgb(kGold, kBlack, kBlack, std::nullopt),
+                                 ShadingMethod::phong});
+        return scene;
+    }
+    add_phase2_lights(scene, id);
+    const glm::mat4 turn = angle ? tumble_rotation(*angle) : glm::mat4(1.0F);
+    if (id == kShaders) {  // the same torus twice, the left one per pixel and the right one per vertex
+        for (const auto& [x, method] : {std::pair{-0.6F, ShadingMethod::phong}, std::pair{0.6F, ShadingMethod::gouraud}}) {
+            scene.objects.push_back({shape_, glm::translate(glm::mat4(1.0F), {x, 0.0F, 0.0F}) * turn * scale(0.55F),
+                                     torus_material(id), method});
+        }
+        return scene;
+    }
+    scene.objects.push_back({shape_, turn * scale(0.8F), torus_material(id), ShadingMethod::phong});
+    return scene;
 }
 
 }  // namespace raster

@@ -3,17 +3,23 @@
 #include "shaded_triangle.hpp"
 
 namespace raster {
+namespace {
 
-std::size_t draw_mesh(RenderTarget target, const OrthoCamera& camera, const Mesh& mesh, const FlatShader& shader) {
+template <typename Shader>
+std::size_t draw(RenderTarget target, const OrthoCamera& camera, const Mesh& mesh, const Shader& shader) {
     return detail::draw_facets(target.colour, target.depth, camera, mesh, shader);
 }
 
-std::size_t draw_mesh(RenderTarget target, const OrthoCamera& camera, const Mesh& mesh, const GouraudShader& shader) {
-    return detail::draw_facets(target.colour, target.depth, camera, mesh, shader);
-}
+}  // namespace
 
-std::size_t draw_mesh(RenderTarget target, const OrthoCamera& camera, const Mesh& mesh, const PhongShader& shader) {
-    return detail::draw_facets(target.colour, target.depth, camera, mesh, shader);
+// One instance of the rasterizer per shader, each compiled here once.
+std::size_t draw_mesh(RenderTarget t, const OrthoCamera& c, const Mesh& m, const FlatShader& s) { return draw(t, c, m, s); }
+std::size_t draw_mesh(RenderTarget t, const OrthoCamera& c, const Mesh& m, const GouraudShader& s) { return draw(t, c, m, s); }
+std::size_t draw_mesh(RenderTarget t, const OrthoCamera& c, const Mesh& m, const PhongShader& s) { return draw(t, c, m, s); }
+std::size_t draw_mesh(RenderTarget t, const OrthoCamera& c, const Mesh& m, const LinearFlatShader& s) { return draw(t, c, m, s); }
+std::size_t draw_mesh(RenderTarget t, const OrthoCamera& c, const Mesh& m, const LinearGouraudShader& s) {
+    return draw(t, c, m, s);
 }
+std::size_t draw_mesh(RenderTarget t, const OrthoCamera& c, const Mesh& m, const LinearPhongShader& s) { return draw(t, c, m, s); }
 
 }  // namespace raster

@@ -26,11 +26,20 @@ std::size_t render(Framebuffer& framebuffer, const Scene& scene, DepthBuffer& de
     for (const SceneObject& object : scene.objects) {
         if (!object.mesh) continue;  // an object without a mesh shows nothing
         const Mesh mesh = posed(*object.mesh, object.model);
-        const Lighting lighting(object.material, scene.lights, to_eye);
+        if (const auto* phase1 = std::get_if<Material>(&object.material)) {
+            const Lighting lighting(*phase1, scene.lights, to_eye);
+            switch (object.shading) {
+            case ShadingMethod::flat: drawn += draw_mesh(target, scene.camera, mesh, FlatShader{&lighting}); break;
+            case ShadingMethod::gouraud: drawn += draw_mesh(target, scene.camera, mesh, GouraudShader{&lighting}); break;
+            case ShadingMethod::phong: drawn += draw_mesh(target, scene.camera, mesh, PhongShader{&lighting}); break;
+            }
+            continue;
+        }
+        const LinearLighting lighting(std::get<PhongMaterial>(object.material), scene.lights, scene.point_lights, to_eye);
         switch (object.shading) {
-        case ShadingMethod::flat: drawn += draw_mesh(target, scene.camera, mesh, FlatShader{&lighting}); break;
-        case ShadingMethod::gouraud: drawn += draw_mesh(target, scene.camera, mesh, GouraudShader{&lighting}); break;
-        case ShadingMethod::phong: drawn += draw_mesh(target, scene.camera, mesh, PhongShader{&lighting}); break;
+        case ShadingMethod::flat: drawn += draw_mesh(target, scene.camera, mesh, LinearFlatShader{&lighting}); break;
+        case ShadingMethod::gouraud: drawn += draw_mesh(target, scene.camera, mesh, LinearGouraudShader{&lighting}); break;
+        case ShadingMethod::phong: drawn += draw_mesh(target, scene.camera, mesh, LinearPhongShader{&lighting}); break;
         }
     }
     return drawn;

@@ -132,9 +132,10 @@ std::size_t draw_facets(Framebuffer& colour, DepthBuffer* depth_buffer, const Or
         screen.push_back({usable_depth ? snap_to_subpixel(camera.screen_from_view(view)) : std::nullopt,
                           static_cast<float>(view.z)});
     }
-    const bool per_facet = Shader::kFacetNormal || mesh.surface == Surface::faceted;
+    // A faceted mesh gives each corner its facet's normal, but keeps the corner's own position.
+    const bool facet_normals = mesh.surface == Surface::faceted;
     std::vector<Varying> varyings;
-    if (!per_facet) {
+    if (!Shader::kFacetNormal && !facet_normals) {
         varyings.reserve(mesh.positions.size());
         for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
             varyings.push_back(shader.vertex({mesh.positions[i], mesh.normals[i]}));
@@ -152,9 +153,13 @@ std::size_t draw_facets(Framebuffer& colour, DepthBuffer* depth_buffer, const Or
         if (!on_screen) continue;
         const std::array<SubpixelPoint, 3> points{corners[0].at, corners[1].at, corners[2].at};
         if (twice_signed_area(points) <= 0) continue;  // facing away, or seen edge-on
-        if (per_facet) {
-            const Varying shared = shader.vertex({mesh.positions[facet.corners[0]], facet.normal});
+        const std::array<glm::vec3, 3> at{mesh.positions[facet.corners[0]], mesh.positions[facet.corners[1]],
+                                          mesh.positions[facet.corners[2]]};
+        if (Shader::kFacetNormal) {  // one value per facet, lit at its centroid
+            const Varying shared = shader.vertex({(at[0] + at[1] + at[2]) / 3.0F, facet.normal});
             for (auto& corner : corners) corner.varying = shared;
+        } else if (facet_normals) {
+            for (std::size_t k = 0; k < 3; ++k) corners[k].varying = shader.vertex({at[k], facet.normal});
         } else {
             for (std::size_t k = 0; k < 3; ++k) corners[k].varying = varyings[facet.corners[k]];
         }

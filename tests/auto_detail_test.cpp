@@ -20,14 +20,14 @@ struct Posed {
     raster::Scene scene;
     [[nodiscard]] const raster::SceneObject& object() const { return scene.objects.front(); }
     [[nodiscard]] DetailChoice choose() const {
-        return raster::choose_detail(shape, object().model, scene.camera, object().material, scene.lights);
+        return raster::choose_detail(shape, object().model, scene.camera, std::get<raster::Material>(object().material), scene.lights);
     }
     [[nodiscard]] double silhouette_px(int level) const {
         return raster::surface_deviation(shape, raster::tessellate(shape, level)) * scene.camera.scale() *
                raster::model_stretch(object().model).most;
     }
     [[nodiscard]] double shading(int level, ShadingMethod method) const {
-        const raster::Lighting lighting(object().material, scene.lights, -scene.camera.direction());
+        const raster::Lighting lighting(std::get<raster::Material>(object().material), scene.lights, -scene.camera.direction());
         const raster::Mesh mesh = raster::posed(raster::tessellate(shape, level), object().model);
         return raster::shading_error_levels(shape, mesh, object().model, scene.camera, method, lighting);
     }
@@ -107,7 +107,7 @@ TEST(AutoDetail, TheRayCastSurfaceAgreesWithinOneLevelInsideTheOutline) {
     raster::Framebuffer image(kWidth, kHeight);
     raster::DepthBuffer depth;
     raster::render(image, scene, depth);
-    const std::vector<lab::ExactObject> exact{{ShapeKind::sphere, sphere.object().model, sphere.object().material}};
+    const std::vector<lab::ExactObject> exact{{ShapeKind::sphere, sphere.object().model, std::get<raster::Material>(sphere.object().material)}};
     const lab::ExactImage reference = lab::ray_cast(scene.camera, kWidth, kHeight, exact, scene.lights, {255, 0, 255});
     int compared = 0;
     for (int y = 1; y + 1 < kHeight; ++y) {
@@ -137,7 +137,7 @@ TEST(AutoDetail, ClipsPlanOnceForEveryFrameAndNonFiniteModelsAreAClearError) {
     ASSERT_TRUE(plan.choices[0].has_value());
     for (const raster::Scene& frame : frames) {
         const raster::SceneObject& object = frame.objects.front();
-        const DetailChoice alone = raster::choose_detail(ShapeKind::sphere, object.model, frame.camera, object.material, frame.lights);
+        const DetailChoice alone = raster::choose_detail(ShapeKind::sphere, object.model, frame.camera, std::get<raster::Material>(object.material), frame.lights);
         EXPECT_GE(plan.choices[0]->level, alone.level);
         EXPECT_GE(plan.choices[0]->shading, alone.shading);
     }
@@ -145,7 +145,7 @@ TEST(AutoDetail, ClipsPlanOnceForEveryFrameAndNonFiniteModelsAreAClearError) {
     EXPECT_EQ(detailed.objects.front().mesh, plan.meshes[0]);
     glm::mat4 broken(1.0F);
     broken[0][0] = std::numeric_limits<float>::quiet_NaN();
-    EXPECT_THROW((void)raster::choose_detail(ShapeKind::torus, broken, frames[0].camera, frames[0].objects[0].material, frames[0].lights),
+    EXPECT_THROW((void)raster::choose_detail(ShapeKind::torus, broken, frames[0].camera, std::get<raster::Material>(frames[0].objects[0].material), frames[0].lights),
                  std::invalid_argument);
 }
 

@@ -118,7 +118,7 @@ TEST(Golden, EveryDiaryScenesAnimationEveryTenthFrame) {
 
 TEST(Golden, ReadmeTorusIsWhatAnimatedSceneDrawsToday) {
     if (std::getenv("RASTER_UPDATE_SNAPSHOTS") != nullptr) GTEST_SKIP() << "update-snapshots rewrites it next";
-    const raster::DiaryScene torus("torus");
+    const raster::DiaryScene torus("point-lights");  // the diary's last look: Phase 2's torus
     Framebuffer expected(320, 240);  // as update-snapshots renders it: 180 frames at 25 fps
     raster::DepthBuffer depth;
     int shown = 0;

@@ -43,7 +43,7 @@ TEST(MeshStability, ZeroAndNaNNormalsShadeAsAmbientNeverNaN) {
     const auto mesh = shared(sphere);
     const raster::Rgb ambient = raster::scaled_colour(kBase, 0.25F);
     for (const auto method : {raster::ShadingMethod::gouraud, raster::ShadingMethod::phong}) {
-        raster::Scene scene{raster::OrthoCamera(60, 40), {0, 0, 0}, {{{1, 1, -1}}}, {}};
+        raster::Scene scene{raster::OrthoCamera(60, 40), {0, 0, 0}, {{{1, 1, -1}}}, {}, {}};
         scene.objects.push_back({mesh, glm::mat4(0.8F), raster::Material::shiny(kBase, 0.25F, 30.0F), method});
         scene.objects.back().model[3][3] = 1.0F;
         Framebuffer image(60, 40);
@@ -56,7 +56,7 @@ TEST(MeshStability, ZeroAndNaNNormalsShadeAsAmbientNeverNaN) {
 TEST(MeshStability, NonFiniteModelsDrawNothingAndUnusableLightsLeaveAmbient) {
     const auto mesh = shared(raster::torus(12, 8));
     for (const float bad : {kNaN, kInf, -kInf}) {
-        raster::Scene scene{raster::OrthoCamera(60, 40), {9, 9, 9}, {{{1, 1, -1}}}, {}};
+        raster::Scene scene{raster::OrthoCamera(60, 40), {9, 9, 9}, {{{1, 1, -1}}}, {}, {}};
         glm::mat4 model(0.5F);
         model[3][3] = 1.0F;
         model[1][2] = bad;
@@ -66,7 +66,7 @@ TEST(MeshStability, NonFiniteModelsDrawNothingAndUnusableLightsLeaveAmbient) {
         EXPECT_EQ(raster::render(image, scene, depth), 0U) << bad;
         EXPECT_TRUE(colours_in(image, {9, 9, 9}).empty()) << bad;
     }
-    raster::Scene dark{raster::OrthoCamera(60, 40), {0, 0, 0}, {{{kNaN, 1, -1}}, {{0, 0, 0}}, {{kInf, 0, 0}}}, {}};
+    raster::Scene dark{raster::OrthoCamera(60, 40), {0, 0, 0}, {{{kNaN, 1, -1}}, {{0, 0, 0}}, {{kInf, 0, 0}}}, {}, {}};
     dark.objects.push_back({shared(raster::sphere(3)), glm::mat4(1.0F), raster::Material::shiny(kBase, 0.25F, 8.0F)});
     Framebuffer image(60, 40);
     raster::DepthBuffer depth;

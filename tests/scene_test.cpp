@@ -16,7 +16,7 @@ namespace {
 std::shared_ptr<const raster::Mesh> shared(raster::Mesh mesh) { return std::make_shared<const raster::Mesh>(std::move(mesh)); }
 
 Scene one_object(std::shared_ptr<const raster::Mesh> mesh, const glm::mat4& model = glm::mat4(0.5F)) {
-    Scene scene{raster::OrthoCamera(64, 48), {0, 0, 0}, {{{1, 1, -1}}}, {}};
+    Scene scene{raster::OrthoCamera(64, 48), {0, 0, 0}, {{{1, 1, -1}}}, {}, {}};
     scene.objects.push_back({std::move(mesh), model, raster::Material::shiny({52, 110, 210}, 0.15F, 100.0F)});
     scene.objects.back().model[3][3] = 1.0F;
     return scene;
@@ -46,7 +46,7 @@ TEST(DepthRule, ALoneConvexMeshNeverTouchesTheDepthBuffer) {
         used.prepare(64, 48);
         tested.clear(scene.background);
         const raster::Mesh posed = raster::posed(*mesh, scene.objects[0].model);
-        const raster::Lighting lighting(scene.objects[0].material, scene.lights, -scene.camera.direction());
+        const raster::Lighting lighting(std::get<raster::Material>(scene.objects[0].material), scene.lights, -scene.camera.direction());
         raster::draw_mesh({tested, &used}, scene.camera, posed, raster::PhongShader{&lighting});
         EXPECT_EQ(differing_pixels(image, tested), 0);
     }
@@ -72,7 +72,7 @@ TEST(DepthRule, SeveralObjectsOrANonConvexMeshGetOneAndNeedIt) {
         Framebuffer untested(64, 48);
         untested.clear(scene.background);
         for (const raster::SceneObject& object : scene.objects) {
-            const raster::Lighting lighting(object.material, scene.lights, -scene.camera.direction());
+            const raster::Lighting lighting(std::get<raster::Material>(object.material), scene.lights, -scene.camera.direction());
             raster::draw_mesh({untested, nullptr}, scene.camera, raster::posed(*object.mesh, object.model), raster::PhongShader{&lighting});
         }
         EXPECT_GT(differing_pixels(image, untested), 0);
@@ -127,7 +127,7 @@ TEST(DiaryScenes, EveryNameBuildsAndUnknownNamesListTheChoices) {
     } catch (const std::invalid_argument& error) {
         EXPECT_NE(std::string(error.what()).find("no scene 'teapot'; the scenes are lit-cube, dodecahedron"), std::string::npos);
     }
-    EXPECT_EQ(raster::diary_scenes().back().name, "torus");
+    EXPECT_EQ(raster::diary_scenes().back().name, "shaders");
 }
 
 TEST(DiaryScenes, CubicEasingStartsSlowEndsSlowAndIsSymmetric) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <raster/lighting.hpp>
+#include <raster/linear_lighting.hpp>
 #include <raster/mesh.hpp>
 #include <raster/ortho_camera.hpp>
 #include <raster/scene.hpp>
@@ -42,6 +43,10 @@ struct DetailChoice {
 // one does. Shading error is estimated on the posed mesh against the shape's true normals.
 [[nodiscard]] DetailChoice choose_detail(ShapeKind shape, const glm::mat4& model, const OrthoCamera& camera,
                                          const Material& material, std::span<const DirectionalLight> lights);
+// The same for a Phase 2 material, its error measured after the sRGB encoding.
+[[nodiscard]] DetailChoice choose_detail(ShapeKind shape, const glm::mat4& model, const OrthoCamera& camera,
+                                         const PhongMaterial& material, std::span<const DirectionalLight> lights,
+                                         std::span<const PointLight> points);
 
 // One choice per object of a scene, made to hold over every sampled frame (the finest level and
 // dearest shading any of them needs), with the meshes built once.
@@ -60,5 +65,7 @@ struct DetailPlan {
 // an outline, or whose line first meets another sheet of the surface, are left to the outline.
 [[nodiscard]] double shading_error_levels(ShapeKind shape, const Mesh& posed_mesh, const glm::mat4& model,
                                           const OrthoCamera& camera, ShadingMethod method, const Lighting& lighting);
+[[nodiscard]] double shading_error_levels(ShapeKind shape, const Mesh& posed_mesh, const glm::mat4& model,
+                                          const OrthoCamera& camera, ShadingMethod method, const LinearLighting& lighting);
 
 }  // namespace raster

@@ -3,12 +3,13 @@
 #include <raster/scene.hpp>
 
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 
-// The scenes of the diary's Phase 1, 0.0.8 to 0.0.17, each as a still and an animation, shared
-// by the exporters, the tests and the bench so they cannot disagree.
+// The scenes of the diary's Phase 1 (0.0.8 to 0.0.17) and Phase 2 (0.1.0 to 0.1.7), each as a
+// still and an animation, shared by the exporters, the tests and the bench so they cannot disagree.
 namespace raster {
 
 struct SceneInfo {
@@ -40,6 +41,7 @@ private:
     [[nodiscard]] Scene untagged_still(int width, int height) const;
     [[nodiscard]] Scene untagged_frame(int width, int height, int index, int count) const;
     [[nodiscard]] Scene tagged(Scene scene) const;
+    [[nodiscard]] Scene phase2(int width, int height, std::optional<float> angle) const;
 
     const SceneInfo* info_;
     std::shared_ptr<const Mesh> shape_;

@@ -24,5 +24,8 @@ struct RenderTarget {
 std::size_t draw_mesh(RenderTarget target, const OrthoCamera& camera, const Mesh& mesh, const FlatShader& shader);
 std::size_t draw_mesh(RenderTarget target, const OrthoCamera& camera, const Mesh& mesh, const GouraudShader& shader);
 std::size_t draw_mesh(RenderTarget target, const OrthoCamera& camera, const Mesh& mesh, const PhongShader& shader);
+std::size_t draw_mesh(RenderTarget target, const OrthoCamera& camera, const Mesh& mesh, const LinearFlatShader& shader);
+std::size_t draw_mesh(RenderTarget target, const OrthoCamera& camera, const Mesh& mesh, const LinearGouraudShader& shader);
+std::size_t draw_mesh(RenderTarget target, const OrthoCamera& camera, const Mesh& mesh, const LinearPhongShader& shader);
 
 }  // namespace raster

@@ -37,6 +37,28 @@ struct Material {
     }
 };
 
+// cosine^shininess for the Blinn-Phong highlight; no shininess means no highlight. A negative or
+// NaN shininess counts as 0 (pow(0, -s) would be infinite).
+class SpecularPower {
+public:
+    explicit SpecularPower(std::optional<float> shininess) noexcept;
+    [[nodiscard]] bool enabled() const noexcept { return exponent_.has_value(); }
+    // Inline: it runs at every pixel of a Phong surface, once per light.
+    [[nodiscard]] float operator()(float cosine) const noexcept {
+        if (!whole_) return std::pow(cosine, *exponent_);
+        // Repeated squaring, several times faster than std::pow (the original's powi does the same).
+        float result = 1.0F;
+        for (unsigned n = *whole_; n != 0; n >>= 1U, cosine *= cosine) {
+            if ((n & 1U) != 0) result *= cosine;
+        }
+        return result;
+    }
+
+private:
+    std::optional<float> exponent_;
+    std::optional<unsigned> whole_;
+};
+
 // A light ready for shading: unit direction toward it and the Blinn half vector for a viewer
 // along `to_eye`; an unusable direction (zero, NaN, infinite) leaves both zero, so the light
 // adds nothing.
@@ -45,6 +67,7 @@ struct PreparedLight {
     glm::vec3 half;
     float intensity;
 };
+[[nodiscard]] PreparedLight prepare_light(const DirectionalLight& light, glm::vec3 to_eye) noexcept;
 
 // Everything the shaders need that is the same for every pixel of a mesh.
 struct Lighting {
@@ -61,23 +84,14 @@ struct Lighting {
         float lit = 0.0F;
         for (const PreparedLight& light : lights) {
             float received = std::max(0.0F, glm::dot(normal, light.toward));
-            if (material.shininess) received += specular(std::max(0.0F, glm::dot(normal, light.half)));
+            if (specular_.enabled()) received += specular_(std::max(0.0F, glm::dot(normal, light.half)));
             lit += light.intensity * received;
         }
         return material.ambient + material.diffuse * lit;
     }
 
 private:
-    [[nodiscard]] float specular(float cosine) const noexcept {
-        if (!whole_shininess_) return std::pow(cosine, *material.shininess);
-        // Repeated squaring, several times faster than std::pow (the original's powi does the same).
-        float result = 1.0F;
-        for (unsigned n = *whole_shininess_; n != 0; n >>= 1U, cosine *= cosine) {
-            if ((n & 1U) != 0) result *= cosine;
-        }
-        return result;
-    }
-    std::optional<unsigned> whole_shininess_;
+    SpecularPower specular_;
 };
 
 // base * intensity per channel, rounded to nearest (halves up) and clamped to 0..255; NaN

@@ -1,6 +1,8 @@
 #pragma once
 
+#include <raster/colour.hpp>
 #include <raster/lighting.hpp>
+#include <raster/linear_lighting.hpp>
 #include <raster/mesh.hpp>
 
 #include <glm/geometric.hpp>
@@ -9,7 +11,7 @@
 // A shader is two stages around the one rasterizer (doc/conventions.md#shading): vertex() turns
 // a corner into a Varying, which the rasterizer interpolates linearly across the triangle, and
 // pixel() turns the interpolated Varying into a colour. kFacetNormal asks for the facet's
-// normal at every corner instead of the vertex normals.
+// normal (and its centroid as the position) at every corner instead of the vertex attributes.
 namespace raster {
 
 // What the vertex stage sees of one corner, in world space.
@@ -44,6 +46,35 @@ struct PhongShader {
     [[nodiscard]] Varying vertex(const Corner& corner) const noexcept { return corner.normal; }
     [[nodiscard]] Rgb pixel(const Varying& normal) const noexcept {
         return scaled_colour(lighting->material.base, lighting->intensity(unit_or_zero(normal)));
+    }
+};
+
+// The same three in linear light (Phase 2): colours summed in linear light and encoded to sRGB
+// at the pixel write.
+template <bool FacetNormal>
+struct LinearColourShader {
+    using Varying = LinearRgb;
+    static constexpr bool kFacetNormal = FacetNormal;
+    const LinearLighting* lighting;
+
+    [[nodiscard]] Varying vertex(const Corner& corner) const noexcept { return lighting->shade(corner.position, corner.normal); }
+    [[nodiscard]] Rgb pixel(const Varying& colour) const noexcept { return srgb_from_linear(colour); }
+};
+
+using LinearFlatShader = LinearColourShader<true>;
+// Lights the corners and interpolates their colours: the original's 0.1.7 GouraudShader.
+using LinearGouraudShader = LinearColourShader<false>;
+
+// World position and normal interpolated, lit at every pixel: the original's 0.1.7 PhongShader,
+// whose point lights need the position.
+struct LinearPhongShader {
+    using Varying = SurfacePoint;
+    static constexpr bool kFacetNormal = false;
+    const LinearLighting* lighting;
+
+    [[nodiscard]] Varying vertex(const Corner& corner) const noexcept { return {corner.position, corner.normal}; }
+    [[nodiscard]] Rgb pixel(const Varying& point) const noexcept {
+        return srgb_from_linear(lighting->shade(point.position, unit_or_zero(point.normal)));
     }
 };
 

@@ -1,0 +1,140 @@
+#pragma once
+
+#include <raster/colour.hpp>
+#include <raster/framebuffer.hpp>
+#include <raster/lighting.hpp>
+#include <raster/mesh.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <span>
+#include <vector>
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+// The diary's Phase 2 light (its 0.1.0 to 0.1.9): explicit material colours, directional and
+// point lights summed in linear light (doc/conventions.md#light-in-linear-colour).
+namespace raster {
+
+// A point light's attenuation with distance d: 1 / (constant + linear d + quadratic d^2).
+struct Falloff {
+    float constant = 1.0F;
+    float linear = 0.0F;
+    float quadratic = 0.0F;
+};
+
+// A light at a point, shining every way; its falloff scales both diffuse and specular light.
+struct PointLight {
+    glm::vec3 position;
+    float intensity = 1.0F;
+    Falloff falloff{};
+};
+
+// Phong colours in linear light, as three.js's MeshPhongMaterial has them: emissive light added
+// once, diffuse and specular light per light; no shininess means no highlight.
+struct PhongMaterial {
+    LinearRgb emissive;
+    LinearRgb diffuse;
+    LinearRgb specular;
+    std::optional<float> shininess;
+
+    // The colours given as sRGB bytes (#RRGGBB), decoded to linear light.
+    [[nodiscard]] static PhongMaterial from_srgb(Rgb emissive, Rgb diffuse, Rgb specular, std::optional<float> shininess);
+};
+
+// A point on a surface in world space: what a per-pixel shader needs for point lights.
+struct SurfacePoint {
+    glm::vec3 position;
+    glm::vec3 normal;
+
+    friend SurfacePoint operator+(const SurfacePoint& x, const SurfacePoint& y) noexcept {
+        return {x.position + y.position, x.normal + y.normal};
+    }
+    friend SurfacePoint operator-(const SurfacePoint& x, const SurfacePoint& y) noexcept {
+        return {x.position - y.position, x.normal - y.normal};
+    }
+    friend SurfacePoint operator*(const SurfacePoint& x, float k) noexcept { return {x.position * k, x.normal * k}; }
+};
+
+// A point light ready for shading; a light with a non-finite position or intensity, or a
+// falloff that is negative, NaN or zero everywhere, never gets this far.
+struct PreparedPointLight {
+    glm::vec3 position;
+    float intensity;
+    Falloff falloff;
+};
+
+// Everything the linear-light shaders need that is the same for every pixel of a mesh.
+class LinearLighting {
+public:
+    // `to_eye` is the unit vector toward the viewer; orthographic, so one for the whole image.
+    LinearLighting(const PhongMaterial& material, std::span<const DirectionalLight> directional,
+                   std::span<const PointLight> points, glm::vec3 to_eye);
+
+    [[nodiscard]] const PhongMaterial& material() const noexcept { return material_; }
+
+    // The colour leaving a surface point with unit normal `normal` toward the viewer (a zero
+    // normal stands for "no normal": emissive only). Never NaN; may exceed 1 before the write
+    // clamps it. Inline: it runs at every pixel of a Phong surface.
+    [[nodiscard]] LinearRgb shade(glm::vec3 position, glm::vec3 normal) const noexcept {
+        if (glm::dot(normal, normal) == 0.0F) return material_.emissive;
+        float diffuse = 0.0F, specular = 0.0F;
+        for (const PreparedLight& light : directional_) {
+            diffuse += light.intensity * std::max(0.0F, glm::dot(normal, light.toward));
+            if (power_.enabled()) specular += light.intensity * power_(std::max(0.0F, glm::dot(normal, light.half)));
+        }
+        for (const PreparedPointLight& light : points_) {
+            const Toward toward = toward_point(light.position, position);
+            if (!(toward.distance > 0.0F)) continue;  // at the light itself: no direction to light from
+            const float received = attenuated(light, toward.distance);
+            diffuse += received * std::max(0.0F, glm::dot(normal, toward.unit));
+            if (power_.enabled()) {
+                specular += received * power_(std::max(0.0F, glm::dot(normal, unit_or_zero(toward.unit + to_eye_))));
+            }
+        }
+        return material_.emissive + material_.diffuse * diffuse + material_.specular * specular;
+    }
+
+    // Every light's factor is held within +-kBrightest, so that sums stay finite.
+    static constexpr float kBrightest = 1e30F;
+
+    // The factor a point light gives at distance d: intensity / (k_c + k_l d + k_q d^2), held
+    // within +-kBrightest (a light on the surface with no constant term would be infinite).
+    [[nodiscard]] static float attenuated(const PreparedPointLight& light, float distance) noexcept {
+        const Falloff& f = light.falloff;
+        // Zero terms stay zero at an infinite distance (0 * inf would be NaN).
+        const float linear = f.linear == 0.0F ? 0.0F : f.linear * distance;
+        const float quadratic = f.quadratic == 0.0F ? 0.0F : f.quadratic * distance * distance;
+        const float denominator = f.constant + linear + quadratic;
+        const float received = light.intensity / denominator;  // denominator > 0: falloffs are checked
+        return std::clamp(received, -kBrightest, kBrightest);
+    }
+
+private:
+    struct Toward {
+        glm::vec3 unit;
+        float distance;  // 0 when there is no direction
+    };
+    // The direction and distance from a surface point to a light; float arithmetic when the
+    // squared distance fits a float, else double (huge or tiny offsets). Distance 0: none.
+    [[nodiscard]] static Toward toward_point(glm::vec3 light, glm::vec3 surface) noexcept {
+        const glm::vec3 offset = light - surface;
+        const float squared = glm::dot(offset, offset);
+        if (squared > 0.0F && squared < std::numeric_limits<float>::infinity()) {
+            const float distance = std::sqrt(squared);
+            return {offset / distance, distance};
+        }
+        return toward_point_precisely(light, surface);
+    }
+    [[nodiscard]] static Toward toward_point_precisely(glm::vec3 light, glm::vec3 surface) noexcept;
+
+    PhongMaterial material_;
+    std::vector<PreparedLight> directional_;
+    std::vector<PreparedPointLight> points_;
+    glm::vec3 to_eye_;
+    SpecularPower power_;
+};
+
+}  // namespace raster
