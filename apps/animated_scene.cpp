@@ -2,12 +2,12 @@
 #include "scene_option.hpp"
 
 int main(int argc, char** argv) {
-    CLI::App app("Renders the animation of one diary scene (0.0.8 to 0.0.17) to a lossless animated "
+    CLI::App app("Renders the animation of one diary scene (0.0.8 to 0.1.7) to a lossless animated "
                  "WebP that loops forever.",
                  "animated-scene");
     app.footer(scene_list() +
                "\nExamples:\n"
-               "  animated-scene                           # the tumbling torus, 360 frames, 7.2 s\n"
+               "  animated-scene                           # two tumbling tori, 360 frames, 7.2 s\n"
                "  animated-scene --scene orbit --effort fast orbit.webp");
     ExportOptions options{"animated-scene.webp"};
     add_export_options(app, options);

@@ -2,12 +2,12 @@
 #include "scene_option.hpp"
 
 int main(int argc, char** argv) {
-    CLI::App app("Renders the still of one diary scene (0.0.8 to 0.0.17) to a lossless WebP.", "still-scene");
+    CLI::App app("Renders the still of one diary scene (0.0.8 to 0.1.7) to a lossless WebP.", "still-scene");
     app.footer(scene_list() +
                "\nExamples:\n"
-               "  still-scene                              # the torus -> still-scene.webp\n"
+               "  still-scene                              # Phong beside Gouraud -> still-scene.webp\n"
                "  still-scene --scene two-spheres spheres.webp\n"
-               "  still-scene --detail auto --width 1920 --height 1080 torus.webp");
+               "  still-scene --scene point-lights --detail auto --width 1920 --height 1080 torus.webp");
     ExportOptions options{"still-scene.webp"};
     add_export_options(app, options);
     std::string name;

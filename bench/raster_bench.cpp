@@ -1,6 +1,7 @@
 // raster-bench: the original's baseline benchmarks (its "performance-eval") re-run here: the
 // 0.0.17 torus tumble, 360 frames rendered in memory and not encoded, at five mesh details and
-// five image sizes. Prints both tables with the original's published numbers beside ours.
+// five image sizes. Prints both tables with the original's published numbers beside ours, and a
+// third of ours: every torus scene at its own detail, Phase 1 against Phase 2's linear light.
 #include <raster/diary_scenes.hpp>
 #include <raster/shapes.hpp>
 #include "exporter.hpp"
@@ -26,7 +27,8 @@ struct Case {
     int detail;         // torus(24 * detail, 16 * detail)
     int width;
     int height;
-    double original_fps;  // the original's published figure (macOS, machine not stated)
+    double original_fps;  // the original's published figure (macOS, machine not stated); 0: none
+    std::string scene = "torus";  // the "scenes" table renders each scene's own meshes
     std::vector<double> fps{};
 };
 
@@ -35,19 +37,22 @@ std::vector<Case> cases() {
             {"detail", 4, 800, 600, 361.44},        {"detail", 8, 800, 600, 184.38},
             {"detail", 16, 800, 600, 77.68},        {"resolution", 1, 800, 600, 704.76},
             {"resolution", 1, 1280, 720, 502.97},   {"resolution", 1, 1920, 1080, 244.07},
-            {"resolution", 1, 3840, 2160, 65.38},   {"resolution", 1, 7680, 4320, 16.65}};
+            {"resolution", 1, 3840, 2160, 65.38},   {"resolution", 1, 7680, 4320, 16.65},
+            {"scenes", 2, 800, 600, 0.0, "torus"},  {"scenes", 2, 800, 600, 0.0, "materials"},
+            {"scenes", 2, 800, 600, 0.0, "three-lights"}, {"scenes", 2, 800, 600, 0.0, "point-lights"},
+            {"scenes", 2, 800, 600, 0.0, "shaders"}};
 }
 
 // Frames per second for `frames` frames of the torus tumble at this case's detail and size.
 double measure(const Case& c, int frames) {
-    const raster::DiaryScene torus("torus");
+    const raster::DiaryScene torus(c.scene);
     const auto mesh = std::make_shared<const raster::Mesh>(raster::torus(24 * c.detail, 16 * c.detail));
     raster::Framebuffer image(c.width, c.height);
     raster::DepthBuffer depth;
     const auto start = std::chrono::steady_clock::now();
     for (int i = 0; i < frames; ++i) {
         raster::Scene scene = torus.frame(c.width, c.height, i, frames);
-        scene.objects.front().mesh = mesh;
+        if (c.table != "scenes") scene.objects.front().mesh = mesh;
         raster::render(image, scene, depth);
     }
     const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
@@ -85,7 +90,8 @@ std::string format(const char* pattern, double a, double b = 0, double c = 0) {
 
 int main(int argc, char** argv) {
     CLI::App app("Times the original's two baseline tables: the 0.0.17 torus tumble rendered in memory "
-                 "(no encoding), by mesh detail at 800x600 and by image size at torus(24, 16).",
+                 "(no encoding), by mesh detail at 800x600 and by image size at torus(24, 16); then every "
+                 "torus scene of Phases 1 and 2 at 800x600.",
                  "raster-bench");
     configure_app(app);
     app.footer("Example:\n  raster-bench --repetitions 5 --csv bench.csv   # about 8 minutes on 2 cores");
@@ -96,6 +102,10 @@ int main(int argc, char** argv) {
     add_integer_option(app, "--repetitions", repetitions, 1, 1000,
                        "Runs of every case, interleaved; the tables show the median and the range");
     app.add_option("--csv", csv, "Also write the measurements as CSV to this file")->option_text("FILE");
+    std::string only = "all";
+    add_choice_option<std::string>(app, "--table", only,
+                                   {{"all", "all"}, {"detail", "detail"}, {"resolution", "resolution"}, {"scenes", "scenes"}},
+                                   "Which table to measure: the original's two, our scenes, or all", "all");
     if (const std::optional<int> exit_code = parse_command_line(app, argc, argv)) return *exit_code;
 
     if (!csv.empty()) {
@@ -107,12 +117,13 @@ int main(int argc, char** argv) {
         }
     }
     std::vector<Case> all = cases();
+    std::erase_if(all, [&](const Case& c) { return only != "all" && c.table != only; });
     const bool terminal = ::isatty(2) == 1;
     for (int r = 0; r < repetitions; ++r) {
         for (Case& c : all) {
             std::cerr << (terminal ? "\r\033[K" : "") << "raster-bench: run " << (r + 1) << "/" << repetitions << ", "
-                      << c.table << " table, " << c.width << "x" << c.height << ", torus(" << 24 * c.detail << ", "
-                      << 16 * c.detail << ")" << (terminal ? "" : "\n") << std::flush;
+                      << c.table << " table, " << c.width << "x" << c.height << ", " << c.scene << "(" << 24 * c.detail
+                      << ", " << 16 * c.detail << ")" << (terminal ? "" : "\n") << std::flush;
             c.fps.push_back(measure(c, frames));
         }
     }
@@ -122,7 +133,8 @@ int main(int argc, char** argv) {
     out << "Machine: " << machine() << "\n"
         << frames << " frames per run, median of " << repetitions << " interleaved runs (min-max); the original's "
         << "figures are from its benchmarks post (macOS, machine not stated)\n\n";
-    out << "| Vertices | Facets | FPS (raster) | FPS (original) |\n|---|---|---|---|\n";
+    const auto has = [&](const char* table) { return std::any_of(all.begin(), all.end(), [&](const Case& c) { return c.table == table; }); };
+    if (has("detail")) out << "| Vertices | Facets | FPS (raster) | FPS (original) |\n|---|---|---|---|\n";
     for (const Case& c : all) {
         if (c.table != "detail") continue;
         const int vertices = 24 * 16 * c.detail * c.detail;
@@ -131,7 +143,7 @@ int main(int argc, char** argv) {
                       *std::max_element(c.fps.begin(), c.fps.end()))
             << " | " << format("%.2f", c.original_fps) << " |\n";
     }
-    out << "\n| Dimensions | Pixels | FPS (raster) | FPS (original) |\n|---|---|---|---|\n";
+    if (has("resolution")) out << "\n| Dimensions | Pixels | FPS (raster) | FPS (original) |\n|---|---|---|---|\n";
     for (const Case& c : all) {
         if (c.table != "resolution") continue;
         out << "| " << c.width << "x" << c.height << " | " << c.width * c.height << " | "
@@ -139,13 +151,21 @@ int main(int argc, char** argv) {
                       *std::max_element(c.fps.begin(), c.fps.end()))
             << " | " << format("%.2f", c.original_fps) << " |\n";
     }
+    if (has("scenes")) out << "\n| Scene (800x600, torus(48, 32)) | Light | FPS (raster) |\n|---|---|---|\n";
+    for (const Case& c : all) {
+        if (c.table != "scenes") continue;
+        out << "| " << c.scene << " | " << (c.scene == "torus" ? "Phase 1, 8-bit" : "Phase 2, linear") << " | "
+            << format("%.1f (%.1f-%.1f)", median(c.fps), *std::min_element(c.fps.begin(), c.fps.end()),
+                      *std::max_element(c.fps.begin(), c.fps.end()))
+            << " |\n";
+    }
     std::cout << out.str();
     if (!csv.empty()) {
         std::ostringstream table;
-        table << "table,vertices,facets,width,height,fps_median,fps_min,fps_max,original_fps\n";
+        table << "table,scene,vertices,facets,width,height,fps_median,fps_min,fps_max,original_fps\n";
         for (const Case& c : all) {
             const int vertices = 24 * 16 * c.detail * c.detail;
-            table << c.table << "," << vertices << "," << 2 * vertices << "," << c.width << "," << c.height << ","
+            table << c.table << "," << c.scene << "," << vertices << "," << 2 * vertices << "," << c.width << "," << c.height << ","
                   << median(c.fps) << "," << *std::min_element(c.fps.begin(), c.fps.end()) << ","
                   << *std::max_element(c.fps.begin(), c.fps.end()) << "," << c.original_fps << "\n";
         }

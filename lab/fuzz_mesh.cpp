@@ -1,6 +1,7 @@
-// libFuzzer target: random triangle soups, poses, cameras and lights through the whole mesh
-// pipeline (vertex stage, culling, fill, interpolation, depth, every shader). It must never crash
-// or write outside its buffers (the sanitizers watch), and its invariants must hold.
+// libFuzzer target: random triangle soups, poses, cameras, materials of both phases and
+// directional and point lights through the whole mesh pipeline (vertex stage, culling, fill,
+// interpolation, depth, every shader). It must never crash or write outside its buffers (the
+// sanitizers watch), and its invariants must hold.
 #include <raster/draw_mesh.hpp>
 #include <raster/scene.hpp>
 
@@ -61,13 +62,32 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     const int lights = input.ConsumeIntegralInRange(0, 3);
     for (int i = 0; i < lights; ++i) scene.lights.push_back({any_vector(input), any_float(input)});
+    const int points = input.ConsumeIntegralInRange(0, 2);
+    for (int i = 0; i < points; ++i) {
+        const glm::vec3 position = any_vector(input);
+        const float intensity = any_float(input);
+        const float k_c = any_float(input), k_l = any_float(input);
+        scene.point_lights.push_back({position, intensity, {k_c, k_l, any_float(input)}});
+    }
     const int objects = input.ConsumeIntegralInRange(1, 3);
     for (int i = 0; i < objects; ++i) {
         glm::mat4 model(1.0F);
         for (int k = 0; k < 12 && input.ConsumeBool(); ++k) model[k / 3][k % 3] = any_float(input);
-        raster::Material material{{input.ConsumeIntegral<std::uint8_t>(), input.ConsumeIntegral<std::uint8_t>(), 200},
-                                  any_float(input), any_float(input), {}};
-        if (input.ConsumeBool()) material.shininess = any_float(input);
+        raster::SurfaceMaterial material;
+        if (input.ConsumeBool()) {
+            raster::Material phase1{{input.ConsumeIntegral<std::uint8_t>(), input.ConsumeIntegral<std::uint8_t>(), 200},
+                                    any_float(input), any_float(input), {}};
+            if (input.ConsumeBool()) phase1.shininess = any_float(input);
+            material = phase1;
+        } else {
+            const auto colour = [&] {
+                const float r = any_float(input), g = any_float(input);
+                return raster::LinearRgb{r, g, any_float(input)};
+            };
+            raster::PhongMaterial phase2{colour(), colour(), colour(), {}};
+            if (input.ConsumeBool()) phase2.shininess = any_float(input);
+            material = phase2;
+        }
         const auto method = static_cast<raster::ShadingMethod>(input.ConsumeIntegralInRange(0, 2));
         scene.objects.push_back({std::make_shared<const raster::Mesh>(soup(input)), model, material, method});
     }
