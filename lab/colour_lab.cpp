@@ -113,7 +113,7 @@ int main(int argc, char** argv) {
         {"double-pow", "the formula with pow in double", definition},
         {"float-pow", "the formula with powf in float", single_precision},
         {"table-4096", "4096-entry table, nearest entry", std::cref(table)},
-        {"sqrt-polynomial", "cubic in sqrt(v), no pow", polynomial},
+        {"sqrt-polynomial", "quartic in sqrt(v), no pow", polynomial},
         {"bisection", "bisection of the 255 exact thresholds", std::cref(bisection)},
         {"thresholds", "4096 buckets, then the exact thresholds (product)",
          [](float v) { return raster::srgb_byte_from_linear(v); }},

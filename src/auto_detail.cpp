@@ -116,7 +116,7 @@ double error_levels(ShapeKind shape, const Mesh& posed_mesh, const glm::mat4& mo
             normals[k] = faceted ? facet.normal : posed_mesh.normals[facet.corners[k]];
             corner_values[k] = light.value(positions[k], normals[k]);
         }
-        const Value flat = light.value((positions[0] + positions[1] + positions[2]) / 3.0F, facet.normal);
+        const Value flat = light.value(positions[0] / 3.0F + positions[1] / 3.0F + positions[2] / 3.0F, facet.normal);
         for (const glm::dvec3& b : kSamples) {
             const glm::dvec3 world = b.x * glm::dvec3(positions[0]) + b.y * glm::dvec3(positions[1]) + b.z * glm::dvec3(positions[2]);
             // The exact image shows, at this point's pixel, the first surface along the view line.

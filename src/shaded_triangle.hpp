@@ -156,7 +156,7 @@ std::size_t draw_facets(Framebuffer& colour, DepthBuffer* depth_buffer, const Or
         const std::array<glm::vec3, 3> at{mesh.positions[facet.corners[0]], mesh.positions[facet.corners[1]],
                                           mesh.positions[facet.corners[2]]};
         if (Shader::kFacetNormal) {  // one value per facet, lit at its centroid
-            const Varying shared = shader.vertex({(at[0] + at[1] + at[2]) / 3.0F, facet.normal});
+            const Varying shared = shader.vertex({at[0] / 3.0F + at[1] / 3.0F + at[2] / 3.0F, facet.normal});  // no overflow
             for (auto& corner : corners) corner.varying = shared;
         } else if (facet_normals) {
             for (std::size_t k = 0; k < 3; ++k) corners[k].varying = shader.vertex({at[k], facet.normal});

@@ -165,3 +165,33 @@ TEST(DepthFormats, SixteenBitFixedLosesNearlyCoplanarPlanesThatFloatKeeps) {
     EXPECT_EQ(wrong("crossing", 0.01, "float32"), 0);
     EXPECT_GT(wrong("gap", 1e-7, "float32"), 1000);
 }
+
+// Phase 2 surfaces are planned by their linear-light colour after the sRGB encoding: an
+// emissive-only marker looks the same however it is shaded, so the cheapest shading is exact;
+// the lit torus needs Phong, and the plan for a scene is what each object would choose alone.
+TEST(AutoDetail, PhaseTwoSurfacesArePlannedByTheirEncodedColour) {
+    const raster::Scene lamp = raster::DiaryScene("point-light").still(800, 600);
+    ASSERT_EQ(lamp.objects.size(), 2U);
+    const raster::SceneObject& marker = lamp.objects[1];
+    const auto& gold = std::get<raster::PhongMaterial>(marker.material);
+    const DetailChoice dot = raster::choose_detail(ShapeKind::sphere, marker.model, lamp.camera, gold, lamp.lights, lamp.point_lights);
+    EXPECT_EQ(dot.shading, ShadingMethod::flat);
+    EXPECT_EQ(dot.shading_levels, 0.0);
+
+    const raster::Scene torus = raster::DiaryScene("point-lights").still(400, 300);
+    const raster::SceneObject& ring = torus.objects.front();
+    const auto& palette = std::get<raster::PhongMaterial>(ring.material);
+    const DetailChoice alone = raster::choose_detail(ShapeKind::torus, ring.model, torus.camera, palette, torus.lights, torus.point_lights);
+    EXPECT_EQ(alone.shading, ShadingMethod::phong);
+    EXPECT_LT(alone.shading_levels, raster::kShadingToleranceLevels);
+    // Flat shading on the same mesh is visibly off, measured in levels of the written bytes.
+    const raster::LinearLighting lighting(palette, torus.lights, torus.point_lights, -torus.camera.direction());
+    const raster::Mesh mesh = raster::posed(raster::tessellate(ShapeKind::torus, alone.level), ring.model);
+    EXPECT_GT(raster::shading_error_levels(ShapeKind::torus, mesh, ring.model, torus.camera, ShadingMethod::flat, lighting), 2.0);
+
+    const raster::DetailPlan plan = raster::plan_detail(std::vector<raster::Scene>{torus});
+    ASSERT_EQ(plan.choices.size(), 1U);
+    ASSERT_TRUE(plan.choices[0].has_value());
+    EXPECT_EQ(plan.choices[0]->level, alone.level);
+    EXPECT_EQ(plan.choices[0]->shading, alone.shading);
+}

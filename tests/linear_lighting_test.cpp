@@ -117,7 +117,7 @@ TEST(LinearLighting, OddLightsGiveDefinedResultsNeverNaN) {
     // A light exactly at the surface point has no direction: it adds nothing there.
     EXPECT_EQ(diffuse_at(kOrigin, kUp, {}, {{kOrigin, 1.0F, none}}), 0.0F);
     EXPECT_EQ(diffuse_at(kOrigin, kUp, {}, {{kOrigin, 1.0F, inverse_square}}), 0.0F);
-    // Just off it, an inverse-square light is as bright as a float allows, not infinite.
+    // Just off it, an inverse-square light is held at kBrightest, not infinite.
     const float close = diffuse_at(kOrigin, kUp, {}, {{{0, 1e-25F, 0}, 1.0F, inverse_square}});
     EXPECT_TRUE(std::isfinite(close));
     EXPECT_EQ(close, LinearLighting::kBrightest);
@@ -142,6 +142,15 @@ TEST(LinearLighting, OddLightsGiveDefinedResultsNeverNaN) {
     const PhongMaterial glowing{{0.1F, 0.2F, 0.3F}, {1, 1, 1}, {1, 1, 1}, 0.0F};
     EXPECT_EQ(LinearLighting(glowing, std::vector<DirectionalLight>{{kUp, 1.0F}}, {}, kToEye).shade(kOrigin, glm::vec3(0.0F)),
               glowing.emissive);
+    // An infinite shininess, where a dot of unit vectors rounding above 1 would give infinity.
+    const PhongMaterial mirror{{0, 0, 0}, {0, 0, 0}, {1, 1, 1}, kInf};
+    for (int i = 0; i < 1000; ++i) {
+        const auto t = static_cast<float>(i);
+        const glm::vec3 n = glm::normalize(glm::vec3(std::sin(t * 0.37F), std::cos(t * 0.71F), std::sin(t * 1.3F) - 1.5F));
+        const std::vector<PointLight> faded{{{0, 3e38F, 0}, 1.0F, inverse_square}};
+        const LinearLighting lit(mirror, std::vector<DirectionalLight>{{n, 1.0F}, {-n, -1.0F}}, faded, n);
+        ASSERT_TRUE(finite(lit.shade(kOrigin, n))) << i;
+    }
     // Every combination above with a shininess, several lights at once: finite.
     const std::vector<PointLight> all{{kOrigin, 1e30F, inverse_square}, {{0, 1e-30F, 0}, 3e38F, inverse_square},
                                       {{0, 3e38F, 0}, -3e38F, none}, {{0, 1, 0}, 1.0F, inverse_square}};

@@ -45,7 +45,8 @@ public:
     [[nodiscard]] bool enabled() const noexcept { return exponent_.has_value(); }
     // Inline: it runs at every pixel of a Phong surface, once per light.
     [[nodiscard]] float operator()(float cosine) const noexcept {
-        if (!whole_) return std::pow(cosine, *exponent_);
+        // A dot of unit vectors can exceed 1 by a rounding; above 1 a huge exponent would overflow.
+        if (!whole_) return std::pow(std::min(cosine, 1.0F), *exponent_);
         // Repeated squaring, several times faster than std::pow (the original's powi does the same).
         float result = 1.0F;
         for (unsigned n = *whole_; n != 0; n >>= 1U, cosine *= cosine) {

@@ -122,7 +122,7 @@ private:
     [[nodiscard]] static Toward toward_point(glm::vec3 light, glm::vec3 surface) noexcept {
         const glm::vec3 offset = light - surface;
         const float squared = glm::dot(offset, offset);
-        if (squared > 0.0F && squared < std::numeric_limits<float>::infinity()) {
+        if (squared >= std::numeric_limits<float>::min() && squared < std::numeric_limits<float>::infinity()) {
             const float distance = std::sqrt(squared);
             return {offset / distance, distance};
         }
