@@ -20,6 +20,8 @@ int main(int argc, char** argv) {
     add_fps_option(app, fps);
     bool automatic = false;
     add_detail_option(app, automatic);
+    int fov = 0;
+    add_perspective_option(app, fov);
 
     return run_exporter(app, options, argc, argv, [&] {
         const raster::DiaryScene scene(name);
@@ -27,7 +29,7 @@ int main(int argc, char** argv) {
         const raster::DetailPlan plan = automatic ? plan_for(scene, options.width, options.height, count) : raster::DetailPlan{};
         raster::DepthBuffer depth;
         return export_animation(app, options, count, fps, [&](raster::Framebuffer& frame, int index) {
-            raster::render(frame, raster::with_detail(scene.frame(frame.width(), frame.height(), index, count), plan), depth);
+            render_scene(frame, raster::with_detail(scene.frame(frame.width(), frame.height(), index, count), plan), fov, depth);
         }) + describe(plan);
     });
 }

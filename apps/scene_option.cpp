@@ -53,3 +53,19 @@ std::string describe(const raster::DetailPlan& plan) {
     }
     return text;
 }
+
+void add_perspective_option(CLI::App& app, int& fov_degrees) {
+    add_integer_option(app, "--perspective", fov_degrees, 0, 179,
+                       "0 (the default): the diary's orthographic camera; 1..179: a perspective camera "
+                       "with this vertical field of view in degrees, moved back along its line of sight "
+                       "so that the scene keeps its framing (small angles look orthographic, wide ones "
+                       "close up)");
+}
+
+void render_scene(raster::Framebuffer& frame, const raster::Scene& scene, int fov_degrees, raster::DepthBuffer& depth) {
+    if (fov_degrees == 0) {
+        raster::render(frame, scene, depth);
+    } else {
+        raster::render(frame, raster::in_perspective(scene, frame.width(), frame.height(), fov_degrees), depth);
+    }
+}

@@ -18,3 +18,9 @@ void add_detail_option(CLI::App& app, bool& automatic);
 raster::DetailPlan plan_for(const raster::DiaryScene& scene, int width, int height, int frames);
 // ", detail torus level 6 (Phong)" for the report line; empty when nothing was chosen.
 std::string describe(const raster::DetailPlan& plan);
+
+// --perspective DEGREES: 0 keeps the diary's orthographic camera; 1..179 looks through a pinhole
+// of that vertical field of view, the eye moved back so the scene keeps its framing.
+void add_perspective_option(CLI::App& app, int& fov_degrees);
+// Renders the scene through the camera the option chose.
+void render_scene(raster::Framebuffer& frame, const raster::Scene& scene, int fov_degrees, raster::DepthBuffer& depth);

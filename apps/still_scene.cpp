@@ -7,6 +7,7 @@ int main(int argc, char** argv) {
                "\nExamples:\n"
                "  still-scene                              # Phong beside Gouraud -> still-scene.webp\n"
                "  still-scene --scene two-spheres spheres.webp\n"
+               "  still-scene --scene point-light --perspective 50 lamp.webp\n"
                "  still-scene --scene point-lights --detail auto --width 1920 --height 1080 torus.webp");
     ExportOptions options{"still-scene.webp"};
     add_export_options(app, options);
@@ -14,13 +15,15 @@ int main(int argc, char** argv) {
     add_scene_option(app, name);
     bool automatic = false;
     add_detail_option(app, automatic);
+    int fov = 0;
+    add_perspective_option(app, fov);
 
     return run_exporter(app, options, argc, argv, [&] {
         const raster::DiaryScene scene(name);
         const raster::DetailPlan plan = automatic ? plan_for(scene, options.width, options.height, 0) : raster::DetailPlan{};
         return export_still(app, options, [&](raster::Framebuffer& frame) {
             raster::DepthBuffer depth;
-            raster::render(frame, raster::with_detail(scene.still(frame.width(), frame.height()), plan), depth);
+            render_scene(frame, raster::with_detail(scene.still(frame.width(), frame.height()), plan), fov, depth);
         }) + describe(plan);
     });
 }

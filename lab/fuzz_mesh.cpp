@@ -1,13 +1,14 @@
 // libFuzzer target: random triangle soups, poses, cameras, materials of both phases and
-// directional and point lights through the whole mesh pipeline (vertex stage, culling, fill,
-// interpolation, depth, every shader). It must never crash or write outside its buffers (the
-// sanitizers watch), and its invariants must hold.
+// directional and point lights through the whole mesh pipeline, orthographic or in perspective
+// (vertex stage, clipping, culling, fill, interpolation, depth, every shader). It must never
+// crash or write outside its buffers (the sanitizers watch), and its invariants must hold.
 #include <raster/draw_mesh.hpp>
 #include <raster/scene.hpp>
 
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <optional>
 #include <fuzzer/FuzzedDataProvider.h>
 #include <stdexcept>
 
@@ -93,10 +94,23 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     raster::Framebuffer first(kWidth, kHeight), second(kWidth, kHeight);
     raster::DepthBuffer depth;
-    const std::size_t drawn = raster::render(first, scene, depth);
+    // Half the time through a pinhole: clipping at near, far and the guard band, and 1/w.
+    const int fov = input.ConsumeBool() ? input.ConsumeIntegralInRange(1, 179) : 0;
+    std::optional<raster::PerspectiveScene> pinhole;
+    if (fov != 0) {
+        try {
+            pinhole = raster::in_perspective(scene, kWidth, kHeight, fov);
+        } catch (const std::invalid_argument&) {
+            return 0;  // an eye too far out to move is refused with a clear error
+        }
+    }
+    const auto draw = [&](raster::Framebuffer& image) {
+        return pinhole ? raster::render(image, *pinhole, depth) : raster::render(image, scene, depth);
+    };
+    const std::size_t drawn = draw(first);
     // Deterministic: the same scene draws the same pixels again, into a buffer that held others.
     second.clear({9, 9, 9});
-    if (raster::render(second, scene, depth) != drawn || !(first == second)) std::abort();
+    if (draw(second) != drawn || !(first == second)) std::abort();
     // Depth is prepared exactly when the rule asks for it, and then holds no NaN.
     if (depth.allocated() != raster::needs_depth(scene)) std::abort();
     if (depth.allocated()) {

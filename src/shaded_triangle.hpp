@@ -6,6 +6,7 @@
 
 #include <raster/mesh.hpp>
 #include <raster/ortho_camera.hpp>
+#include <raster/shaders.hpp>
 
 #include <array>
 #include <cmath>
@@ -56,9 +57,13 @@ inline std::array<WeightPlane, 2> weight_planes(SubpixelPoint p0, SubpixelPoint 
     return {WeightPlane{x0, y0, by / cross, -bx / cross}, WeightPlane{x0, y0, -ay / cross, ax / cross}};
 }
 
+// How attributes vary across the screen: linearly for an orthographic view; through 1/w for a
+// perspective one, where each corner's depth is its view depth w > 0.
+enum class Interpolation { screen_linear, perspective };
+
 // Fills one triangle facing the camera. Varying needs +, - and * float; corner 0 anchors the
 // interpolation (v0 + w1 (v1 - v0) + w2 (v2 - v0)), so equal corners give that value exactly.
-template <typename Shader, typename DepthFormat = FloatDepth>
+template <typename Shader, typename DepthFormat = FloatDepth, Interpolation kMode = Interpolation::screen_linear>
 void shade_triangle(Framebuffer& colour, DepthBuffer* depth,
                     const std::array<ShadedCorner<typename Shader::Varying>, 3>& corners, const Shader& shader,
                     DepthFormat stored = {}) {
@@ -79,6 +84,29 @@ void shade_triangle(Framebuffer& colour, DepthBuffer* depth,
     std::uint8_t* const pixels = colour.pixels();
     const std::size_t width = static_cast<std::size_t>(colour.width());
 
+    if constexpr (kMode == Interpolation::perspective) {
+        // Screen weights a, b of corners 1 and 2 become b_k / w_k over their sum: the weights
+        // of the surface point seen there; the sum is 1 / w, so the view depth comes with them.
+        const double inv0 = 1.0 / corners[0].depth, inv1 = 1.0 / corners[1].depth, inv2 = 1.0 / corners[2].depth;
+        rasterize_convex(points, {0, 0, colour.width(), colour.height()}, [&](Span span) {
+            std::uint8_t* out = pixels + (static_cast<std::size_t>(span.y) * width + static_cast<std::size_t>(span.x_begin)) * 3;
+            float* nearest = depth != nullptr ? depth->row(span.y) + span.x_begin : nullptr;
+            for (int x = span.x_begin; x < span.x_end; ++x, out += 3) {
+                const double a = w1.at(x, span.y), b = w2.at(x, span.y);
+                const double q1 = a * inv1, q2 = b * inv2, sum = (1.0 - a - b) * inv0 + q1 + q2;
+                if (nearest != nullptr) {
+                    const float z = stored(static_cast<float>(1.0 / sum));
+                    if (z > nearest[x - span.x_begin]) continue;  // something nearer is already there
+                    nearest[x - span.x_begin] = z;
+                }
+                const Rgb c = shader.pixel(base + along1 * static_cast<float>(q1 / sum) + along2 * static_cast<float>(q2 / sum));
+                out[0] = c.r;
+                out[1] = c.g;
+                out[2] = c.b;
+            }
+        });
+        return;
+    }
     rasterize_convex(points, {0, 0, colour.width(), colour.height()}, [&](Span span) {
         const double i = span.x_begin, j = span.y;
         const double a = w1.at(i, j), b = w2.at(i, j);
@@ -100,17 +128,9 @@ void shade_triangle(Framebuffer& colour, DepthBuffer* depth,
     });
 }
 
-struct ScreenVertex {
-    std::optional<SubpixelPoint> at;  // nothing when not finite or too far away
-    float depth;
-};
-
-// The vertex stage: every position projected once, every corner's Varying made once per vertex
-// or, for facet normals, once per facet.
-template <typename Shader, typename DepthFormat = FloatDepth>
-std::size_t draw_facets(Framebuffer& colour, DepthBuffer* depth_buffer, const OrthoCamera& camera, const Mesh& mesh,
-                        const Shader& shader, DepthFormat stored = {}) {
-    using Varying = typename Shader::Varying;
+// Throws std::invalid_argument for a depth buffer of another size or a mesh whose facets or
+// normals do not match its vertices.
+inline void check_drawable(const Framebuffer& colour, const DepthBuffer* depth_buffer, const Mesh& mesh) {
     if (depth_buffer != nullptr && (depth_buffer->width() != colour.width() || depth_buffer->height() != colour.height())) {
         throw std::invalid_argument("depth buffer and framebuffer differ in size");
     }
@@ -123,6 +143,47 @@ std::size_t draw_facets(Framebuffer& colour, DepthBuffer* depth_buffer, const Or
             if (corner >= mesh.positions.size()) throw std::invalid_argument("mesh facet names a missing vertex");
         }
     }
+}
+
+// The Varying of each corner of a facet, from the vertex stage's per-vertex results or, for
+// facet normals, made here.
+template <typename Shader>
+std::array<typename Shader::Varying, 3> facet_varyings(const Shader& shader, const Mesh& mesh, const Facet& facet,
+                                                       const std::vector<typename Shader::Varying>& per_vertex) {
+    const std::array<glm::vec3, 3> at{mesh.positions[facet.corners[0]], mesh.positions[facet.corners[1]],
+                                      mesh.positions[facet.corners[2]]};
+    if (Shader::kFacetNormal) {  // one value per facet, lit at its centroid
+        const auto shared = shader.vertex({at[0] / 3.0F + at[1] / 3.0F + at[2] / 3.0F, facet.normal});  // no overflow
+        return {shared, shared, shared};
+    }
+    if (mesh.surface == Surface::faceted) {  // the facet's normal, each corner's own position
+        return {shader.vertex({at[0], facet.normal}), shader.vertex({at[1], facet.normal}), shader.vertex({at[2], facet.normal})};
+    }
+    return {per_vertex[facet.corners[0]], per_vertex[facet.corners[1]], per_vertex[facet.corners[2]]};
+}
+
+// The vertex stage's per-vertex Varyings, when the shader uses them.
+template <typename Shader>
+std::vector<typename Shader::Varying> vertex_varyings(const Shader& shader, const Mesh& mesh) {
+    std::vector<typename Shader::Varying> varyings;
+    if (Shader::kFacetNormal || mesh.surface == Surface::faceted) return varyings;
+    varyings.reserve(mesh.positions.size());
+    for (std::size_t i = 0; i < mesh.positions.size(); ++i) varyings.push_back(shader.vertex({mesh.positions[i], mesh.normals[i]}));
+    return varyings;
+}
+
+struct ScreenVertex {
+    std::optional<SubpixelPoint> at;  // nothing when not finite or too far away
+    float depth;
+};
+
+// The vertex stage: every position projected once, every corner's Varying made once per vertex
+// or, for facet normals, once per facet.
+template <typename Shader, typename DepthFormat = FloatDepth>
+std::size_t draw_facets(Framebuffer& colour, DepthBuffer* depth_buffer, const OrthoCamera& camera, const Mesh& mesh,
+                        const Shader& shader, DepthFormat stored = {}) {
+    using Varying = typename Shader::Varying;
+    check_drawable(colour, depth_buffer, mesh);
     std::vector<ScreenVertex> screen;
     screen.reserve(mesh.positions.size());
     for (const glm::vec3& position : mesh.positions) {
@@ -132,15 +193,7 @@ std::size_t draw_facets(Framebuffer& colour, DepthBuffer* depth_buffer, const Or
         screen.push_back({usable_depth ? snap_to_subpixel(camera.screen_from_view(view)) : std::nullopt,
                           static_cast<float>(view.z)});
     }
-    // A faceted mesh gives each corner its facet's normal, but keeps the corner's own position.
-    const bool facet_normals = mesh.surface == Surface::faceted;
-    std::vector<Varying> varyings;
-    if (!Shader::kFacetNormal && !facet_normals) {
-        varyings.reserve(mesh.positions.size());
-        for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
-            varyings.push_back(shader.vertex({mesh.positions[i], mesh.normals[i]}));
-        }
-    }
+    const std::vector<Varying> varyings = vertex_varyings(shader, mesh);
     std::size_t drawn = 0;
     for (const Facet& facet : mesh.facets) {
         std::array<ShadedCorner<Varying>, 3> corners{};
@@ -153,16 +206,8 @@ std::size_t draw_facets(Framebuffer& colour, DepthBuffer* depth_buffer, const Or
         if (!on_screen) continue;
         const std::array<SubpixelPoint, 3> points{corners[0].at, corners[1].at, corners[2].at};
         if (twice_signed_area(points) <= 0) continue;  // facing away, or seen edge-on
-        const std::array<glm::vec3, 3> at{mesh.positions[facet.corners[0]], mesh.positions[facet.corners[1]],
-                                          mesh.positions[facet.corners[2]]};
-        if (Shader::kFacetNormal) {  // one value per facet, lit at its centroid
-            const Varying shared = shader.vertex({at[0] / 3.0F + at[1] / 3.0F + at[2] / 3.0F, facet.normal});  // no overflow
-            for (auto& corner : corners) corner.varying = shared;
-        } else if (facet_normals) {
-            for (std::size_t k = 0; k < 3; ++k) corners[k].varying = shader.vertex({at[k], facet.normal});
-        } else {
-            for (std::size_t k = 0; k < 3; ++k) corners[k].varying = varyings[facet.corners[k]];
-        }
+        const std::array<Varying, 3> values = facet_varyings(shader, mesh, facet, varyings);
+        for (std::size_t k = 0; k < 3; ++k) corners[k].varying = values[k];
         shade_triangle(colour, depth_buffer, corners, shader, stored);
         ++drawn;
     }

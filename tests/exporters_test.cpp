@@ -188,6 +188,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"UnknownScene", test_support::kStillScene, {"--scene", "teapot", "existing.webp"}, "--scene: 'teapot' is not one of lit-cube, dodecahedron, orbit"},
         BadInput{"SceneFramesBeyondTheLimit", test_support::kAnimatedScene, {"--frames", "10001", "existing.webp"}, "--frames: 10001 is out of range (expected 0..10000)"},
         BadInput{"SceneSizeNotANumber", test_support::kAnimatedScene, {"--width", "8k", "existing.webp"}, "--width: '8k' is not an integer"},
+        BadInput{"StraightAngleOfView", test_support::kStillScene, {"--perspective", "180", "existing.webp"}, "--perspective: 180 is out of range (expected 0..179)"},
+        BadInput{"NegativeAngleOfView", test_support::kAnimatedScene, {"--perspective", "-5", "existing.webp"}, "--perspective: -5 is out of range (expected 0..179)"},
         BadInput{"SceneOutputIsADirectory", test_support::kStillScene, {"."}, "cannot write '.'", false},
         BadInput{"OutputTwice", kStillCube, {"-o", "a.webp", "existing.webp"}, "excludes"},
         BadInput{"MissingDirectory", kStillCube, {"missing/out.webp"}, "directory 'missing' does not exist", false},

@@ -102,6 +102,18 @@ TEST(Golden, EveryDiaryScenesStill) {
     }
 }
 
+// The same stills through a 60-degree pinhole (--perspective 60): near-plane clipping, 1/w
+// interpolation and per-point view directions, pinned.
+TEST(Golden, DiaryStillsInPerspective) {
+    for (const std::string_view name : {"two-spheres", "point-light", "shaders"}) {
+        Framebuffer image = scene_frame();
+        raster::DepthBuffer depth;
+        const raster::Scene scene = raster::DiaryScene(name).still(image.width(), image.height());
+        raster::render(image, raster::in_perspective(scene, image.width(), image.height(), 60.0), depth);
+        EXPECT_TRUE(matches_snapshot(image, "perspective/" + std::string(name)));
+    }
+}
+
 TEST(Golden, EveryDiaryScenesAnimationEveryTenthFrame) {
     for (const raster::SceneInfo& info : raster::diary_scenes()) {
         const raster::DiaryScene scene(info.name);

@@ -42,6 +42,18 @@ TEST(StillSceneApp, EverySceneAtAnySizeDecodesToTheInMemoryRender) {
     }
 }
 
+TEST(StillSceneApp, PerspectiveLooksThroughAPinholeKeepingTheFraming) {
+    const ScratchDir dir;
+    const auto result = run(kStillScene, {"--scene", "point-light", "--perspective", "50", "--width", "96", "--height", "72", "p.webp"}, dir.path());
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    Framebuffer expected(96, 72);
+    raster::DepthBuffer depth;
+    raster::render(expected, raster::in_perspective(raster::DiaryScene("point-light").still(96, 72), 96, 72, 50.0), depth);
+    const Framebuffer written = raster::read_webp(dir / "p.webp").frames.at(0).image;
+    EXPECT_EQ(written, expected);
+    EXPECT_NE(written, still_of("point-light", 96, 72));
+}
+
 TEST(AnimatedSceneApp, WritesTheScenesOwnFrameCountTwentyMillisecondsApart) {
     const ScratchDir dir;
     const auto result = run(kAnimatedScene, {"--scene", "orbit", "--width", "64", "--height", "48", "--effort", "fast"}, dir.path());

@@ -69,9 +69,11 @@ struct PreparedPointLight {
 // Everything the linear-light shaders need that is the same for every pixel of a mesh.
 class LinearLighting {
 public:
-    // `to_eye` is the unit vector toward the viewer; orthographic, so one for the whole image.
+    // `to_eye` is the unit vector toward the viewer of an orthographic view, one for the whole
+    // image; with an `eye_position` (a perspective view) it is taken toward the eye at each point.
     LinearLighting(const PhongMaterial& material, std::span<const DirectionalLight> directional,
-                   std::span<const PointLight> points, glm::vec3 to_eye);
+                   std::span<const PointLight> points, glm::vec3 to_eye,
+                   std::optional<glm::vec3> eye_position = std::nullopt);
 
     [[nodiscard]] const PhongMaterial& material() const noexcept { return material_; }
 
@@ -80,10 +82,14 @@ public:
     // clamps it. Inline: it runs at every pixel of a Phong surface.
     [[nodiscard]] LinearRgb shade(glm::vec3 position, glm::vec3 normal) const noexcept {
         if (glm::dot(normal, normal) == 0.0F) return material_.emissive;
+        const glm::vec3 to_eye = eye_ ? unit_or_zero(*eye_ - position) : to_eye_;
         float diffuse = 0.0F, specular = 0.0F;
         for (const PreparedLight& light : directional_) {
             diffuse += light.intensity * std::max(0.0F, glm::dot(normal, light.toward));
-            if (power_.enabled()) specular += light.intensity * power_(std::max(0.0F, glm::dot(normal, light.half)));
+            if (power_.enabled()) {
+                const glm::vec3 half = eye_ ? unit_or_zero(light.toward + to_eye) : light.half;
+                specular += light.intensity * power_(std::max(0.0F, glm::dot(normal, half)));
+            }
         }
         for (const PreparedPointLight& light : points_) {
             const Toward toward = toward_point(light.position, position);
@@ -91,7 +97,7 @@ public:
             const float received = attenuated(light, toward.distance);
             diffuse += received * std::max(0.0F, glm::dot(normal, toward.unit));
             if (power_.enabled()) {
-                specular += received * power_(std::max(0.0F, glm::dot(normal, unit_or_zero(toward.unit + to_eye_))));
+                specular += received * power_(std::max(0.0F, glm::dot(normal, unit_or_zero(toward.unit + to_eye))));
             }
         }
         return material_.emissive + material_.diffuse * diffuse + material_.specular * specular;
@@ -134,6 +140,7 @@ private:
     std::vector<PreparedLight> directional_;
     std::vector<PreparedPointLight> points_;
     glm::vec3 to_eye_;
+    std::optional<glm::vec3> eye_;
     SpecularPower power_;
 };
 

@@ -44,6 +44,7 @@ public:
     // The unit direction the camera looks in, pointing into the scene.
     [[nodiscard]] glm::vec3 direction() const noexcept { return glm::vec3(forward_); }
     [[nodiscard]] glm::vec3 eye() const noexcept { return glm::vec3(eye_); }
+    [[nodiscard]] glm::vec3 up() const noexcept { return glm::vec3(up_); }
 
     // Pixels per world unit: (min(width, height) - 1) / 2.
     [[nodiscard]] double scale() const noexcept { return scale_; }

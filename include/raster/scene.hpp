@@ -6,10 +6,12 @@
 #include <raster/linear_lighting.hpp>
 #include <raster/mesh.hpp>
 #include <raster/ortho_camera.hpp>
+#include <raster/perspective_camera.hpp>
 #include <raster/shapes.hpp>
 
 #include <memory>
 #include <optional>
+#include <span>
 #include <variant>
 #include <vector>
 #include <glm/mat4x4.hpp>
@@ -33,22 +35,40 @@ struct SceneObject {
     std::optional<ShapeKind> shape{};
 };
 
-// Everything one frame shows.
-struct Scene {
-    OrthoCamera camera;
+// Everything one frame shows, seen through an orthographic or a perspective camera.
+template <typename Camera>
+struct BasicScene {
+    Camera camera;
     Rgb background{0, 0, 0};
     std::vector<DirectionalLight> lights;
     // Point lights light Phase 2 materials only; the Phase 1 model knew directional light alone.
     std::vector<PointLight> point_lights;
     std::vector<SceneObject> objects;
 };
+using Scene = BasicScene<OrthoCamera>;
+using PerspectiveScene = BasicScene<PerspectiveCamera>;
 
 // Whether the scene can hide one surface behind another once back faces are culled: more than
 // one object, or a mesh that is not convex (doc/conventions.md#depth).
-[[nodiscard]] bool needs_depth(const Scene& scene) noexcept;
+[[nodiscard]] bool needs_depth(std::span<const SceneObject> objects) noexcept;
+template <typename Camera>
+[[nodiscard]] bool needs_depth(const BasicScene<Camera>& scene) noexcept {
+    return needs_depth(std::span<const SceneObject>(scene.objects));
+}
 
 // Clears to the background and draws every object; `depth` is prepared and used only when the
 // scene needs it, so a lone convex mesh never touches it. Returns the facets drawn.
 std::size_t render(Framebuffer& framebuffer, const Scene& scene, DepthBuffer& depth);
+// The same in perspective: triangles are clipped to the near and far planes (and a guard band),
+// attributes interpolated through 1/w, and the viewer's direction taken at each point
+// (doc/conventions.md#perspective). The camera must have the framebuffer's size.
+std::size_t render(Framebuffer& framebuffer, const PerspectiveScene& scene, DepthBuffer& depth);
+
+// The scene through a pinhole of vertical field of view `fov_degrees` (0 < fov < 180): the eye
+// moves back along its line of sight until the plane through the world origin keeps the
+// orthographic framing, so a small field of view looks like the orthographic picture and a
+// wide one is seen from close by. Near and far are 1/100 of that distance and 100 beyond it.
+// Throws std::invalid_argument for a field of view out of range or an eye too far out to move.
+[[nodiscard]] PerspectiveScene in_perspective(const Scene& scene, int width, int height, double fov_degrees);
 
 }  // namespace raster

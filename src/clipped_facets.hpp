@@ -1,0 +1,57 @@
+#pragma once
+
+#include "clip_triangle.hpp"
+#include "shaded_triangle.hpp"
+
+#include <raster/perspective_camera.hpp>
+
+#include <vector>
+
+// The perspective front end of the one rasterizer: project to clip space, clip, divide, snap,
+// cull, then fill with attributes interpolated through 1/w.
+namespace raster::detail {
+
+template <typename Shader>
+std::size_t draw_facets_in_perspective(Framebuffer& colour, DepthBuffer* depth_buffer, const PerspectiveCamera& camera,
+                                       const Mesh& mesh, const Shader& shader) {
+    using Varying = typename Shader::Varying;
+    check_drawable(colour, depth_buffer, mesh);
+    if (camera.width() != colour.width() || camera.height() != colour.height()) {
+        throw std::invalid_argument("camera and framebuffer differ in size");
+    }
+    const ClipPlanes frustum(colour.width(), colour.height());
+    std::vector<glm::dvec4> clip;
+    clip.reserve(mesh.positions.size());
+    for (const glm::vec3& position : mesh.positions) clip.push_back(camera.clip_from_world(position));
+    const std::vector<Varying> varyings = vertex_varyings(shader, mesh);
+    std::size_t drawn = 0;
+    for (const Facet& facet : mesh.facets) {
+        const std::array<Varying, 3> values = facet_varyings(shader, mesh, facet, varyings);
+        const ClippedPolygon<Varying> polygon =
+            clip_triangle(frustum, ClipVertex<Varying>{clip[facet.corners[0]], values[0]},
+                          ClipVertex<Varying>{clip[facet.corners[1]], values[1]}, ClipVertex<Varying>{clip[facet.corners[2]], values[2]});
+        std::array<ShadedCorner<Varying>, kMaxClippedCorners> corners{};
+        bool usable = polygon.size >= 3;
+        for (std::size_t k = 0; k < polygon.size && usable; ++k) {
+            const ClipVertex<Varying>& vertex = polygon.corners[k];
+            const std::optional<SubpixelPoint> at = snap_to_subpixel(camera.screen_from_clip(vertex.clip));
+            usable = at.has_value();  // inside the guard band, so only NaN fails here
+            if (usable) corners[k] = {*at, static_cast<float>(vertex.clip.w), vertex.varying};
+        }
+        if (!usable) continue;
+        // A fan over the clipped polygon; every piece keeps the facet's winding, so each is culled
+        // on its own snapped area like an unclipped facet.
+        bool any = false;
+        for (std::size_t k = 1; k + 1 < polygon.size; ++k) {
+            const std::array<ShadedCorner<Varying>, 3> piece{corners[0], corners[k], corners[k + 1]};
+            const std::array<SubpixelPoint, 3> points{piece[0].at, piece[1].at, piece[2].at};
+            if (twice_signed_area(points) <= 0) continue;  // facing away or edge-on
+            shade_triangle<Shader, FloatDepth, Interpolation::perspective>(colour, depth_buffer, piece, shader);
+            any = true;
+        }
+        drawn += any ? 1 : 0;
+    }
+    return drawn;
+}
+
+}  // namespace raster::detail
