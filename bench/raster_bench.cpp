@@ -30,6 +30,7 @@ struct Case {
     int height;
     double original_fps;  // the original's published figure (macOS, machine not stated); 0: none
     std::string scene = "torus";  // the "scenes" table renders each scene's own meshes
+    int fov = 0;                  // and, when not 0, through this pinhole (--perspective)
     std::vector<double> fps{};
 };
 
@@ -41,7 +42,8 @@ std::vector<Case> cases() {
             {"resolution", 1, 3840, 2160, 65.38},   {"resolution", 1, 7680, 4320, 16.65},
             {"scenes", 2, 800, 600, 0.0, "torus"},  {"scenes", 2, 800, 600, 0.0, "materials"},
             {"scenes", 2, 800, 600, 0.0, "three-lights"}, {"scenes", 2, 800, 600, 0.0, "point-lights"},
-            {"scenes", 2, 800, 600, 0.0, "shaders"}};
+            {"scenes", 2, 800, 600, 0.0, "shaders"}, {"scenes", 2, 800, 600, 0.0, "torus", 60},
+            {"scenes", 2, 800, 600, 0.0, "point-lights", 60}};
 }
 
 // Frames per second for `frames` frames of the torus tumble at this case's detail and size.
@@ -54,7 +56,11 @@ double measure(const Case& c, int frames) {
     for (int i = 0; i < frames; ++i) {
         raster::Scene scene = torus.frame(c.width, c.height, i, frames);
         if (c.table != "scenes") scene.objects.front().mesh = mesh;
-        raster::render(image, scene, depth);
+        if (c.fov == 0) {
+            raster::render(image, scene, depth);
+        } else {
+            raster::render(image, raster::in_perspective(scene, c.width, c.height, c.fov), depth);
+        }
     }
     const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
     return frames / elapsed.count();
@@ -169,7 +175,8 @@ int main(int argc, char** argv) {
     if (has("scenes")) out << "\n| Scene (800x600, each torus(48, 32)) | Light | FPS (raster) |\n|---|---|---|\n";
     for (const Case& c : all) {
         if (c.table != "scenes") continue;
-        out << "| " << c.scene << " | " << (c.scene == "torus" ? "Phase 1, 8-bit" : "Phase 2, linear") << " | "
+        out << "| " << c.scene << (c.fov == 0 ? "" : ", --perspective " + std::to_string(c.fov)) << " | "
+            << (c.scene == "torus" ? "Phase 1, 8-bit" : "Phase 2, linear") << " | "
             << format("%.1f (%.1f-%.1f)", median(c.fps), *std::min_element(c.fps.begin(), c.fps.end()),
                       *std::max_element(c.fps.begin(), c.fps.end()))
             << " |\n";
@@ -177,10 +184,10 @@ int main(int argc, char** argv) {
     std::cout << out.str();
     if (!csv.empty()) {
         std::ostringstream table;
-        table << "table,scene,vertices,facets,width,height,fps_median,fps_min,fps_max,original_fps\n";
+        table << "table,scene,fov,vertices,facets,width,height,fps_median,fps_min,fps_max,original_fps\n";
         for (const Case& c : all) {
             const auto [vertices, facets] = drawn_size(c);
-            table << c.table << "," << c.scene << "," << vertices << "," << facets << "," << c.width << "," << c.height << ","
+            table << c.table << "," << c.scene << "," << c.fov << "," << vertices << "," << facets << "," << c.width << "," << c.height << ","
                   << median(c.fps) << "," << *std::min_element(c.fps.begin(), c.fps.end()) << ","
                   << *std::max_element(c.fps.begin(), c.fps.end()) << "," << c.original_fps << "\n";
         }

@@ -97,12 +97,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // Half the time through a pinhole: clipping at near, far and the guard band, and 1/w.
     const int fov = input.ConsumeBool() ? input.ConsumeIntegralInRange(1, 179) : 0;
     std::optional<raster::PerspectiveScene> pinhole;
-    if (fov != 0) {
-        try {
-            pinhole = raster::in_perspective(scene, kWidth, kHeight, fov);
-        } catch (const std::invalid_argument&) {
-            return 0;  // an eye too far out to move is refused with a clear error
+    const bool own_lens = fov == 0 && input.ConsumeBool();
+    try {
+        if (fov != 0) pinhole = raster::in_perspective(scene, kWidth, kHeight, fov);
+        if (own_lens) {  // a first-person camera with any lens at all
+            const glm::vec3 eye = any_vector(input);
+            const double pitch = any_float(input), yaw = any_float(input);
+            const raster::PerspectiveCamera::Lens lens{any_float(input) * 100.0, input.ConsumeFloatingPoint<double>(),
+                                                       input.ConsumeFloatingPoint<double>()};
+            pinhole = raster::PerspectiveScene{raster::PerspectiveCamera::first_person(kWidth, kHeight, eye, pitch, yaw, lens),
+                                               scene.background, scene.lights, scene.point_lights, scene.objects};
         }
+    } catch (const std::invalid_argument&) {
+        return 0;  // a camera refused with a clear error is a fine outcome
     }
     const auto draw = [&](raster::Framebuffer& image) {
         return pinhole ? raster::render(image, *pinhole, depth) : raster::render(image, scene, depth);

@@ -27,17 +27,18 @@ struct ClippedPolygon {
     std::size_t size = 0;
 };
 
-// The guard band: projected positions stay within this many pixels of the origin, half the
-// exact fill's range, so x and y need clipping only for triangles that reach that far.
+// The guard band: x and y are clipped this many pixels beyond the image's edges, so that
+// projected positions stay well inside the exact fill's range for any image up to 2^20 px.
 inline constexpr double kGuardBandPixels = kMaxSubpixelCoordinate / 4.0;
 
 // Inside means plane . clip >= 0.
 struct ClipPlanes {
     std::array<glm::dvec4, 6> planes;
 
-    // Near: z_c >= 0; far: z_c <= w_c; x and y within the guard band of a width x height image.
-    ClipPlanes(int width, int height) noexcept {
-        const double gx = 2.0 * kGuardBandPixels / width, gy = 2.0 * kGuardBandPixels / height;
+    // Near: z_c >= 0; far: z_c <= w_c; x and y within `band` pixels beyond the edges of a
+    // width x height image (the lab sets it to 0 to clip all six planes at the image).
+    ClipPlanes(int width, int height, double band = kGuardBandPixels) noexcept {
+        const double gx = 1.0 + 2.0 * band / width, gy = 1.0 + 2.0 * band / height;
         planes = {glm::dvec4{0, 0, 1, 0}, glm::dvec4{0, 0, -1, 1}, glm::dvec4{1, 0, 0, gx},
                   glm::dvec4{-1, 0, 0, gx}, glm::dvec4{0, 1, 0, gy}, glm::dvec4{0, -1, 0, gy}};
     }
@@ -70,9 +71,14 @@ ClippedPolygon<Varying> clip_triangle(const ClipPlanes& frustum, const ClipVerte
             if (std::isnan(d_from) || std::isnan(d_to) || kept.size + 2 > kMaxClippedCorners) return {};
             if (d_from >= 0.0) kept.corners[kept.size++] = from;
             if ((d_from >= 0.0) != (d_to >= 0.0)) {  // the edge crosses the plane: keep the crossing
-                const double t = d_from / (d_from - d_to);
-                kept.corners[kept.size++] = {from.clip + t * (to.clip - from.clip),
-                                             from.varying + (to.varying - from.varying) * static_cast<float>(t)};
+                // Measured from the inside end, so both facets sharing the edge get the same point.
+                const bool from_inside = d_from >= 0.0;
+                const ClipVertex<Varying>& in = from_inside ? from : to;
+                const ClipVertex<Varying>& out = from_inside ? to : from;
+                const double d_in = from_inside ? d_from : d_to, d_out = from_inside ? d_to : d_from;
+                const double t = d_in / (d_in - d_out);
+                kept.corners[kept.size++] = {in.clip + t * (out.clip - in.clip),
+                                             in.varying + (out.varying - in.varying) * static_cast<float>(t)};
             }
         }
         polygon = kept;

@@ -11,32 +11,51 @@
 // cull, then fill with attributes interpolated through 1/w.
 namespace raster::detail {
 
-template <typename Shader>
+// `band`: how far beyond the image's edges x and y are clipped, in pixels (the lab compares).
+template <typename Shader, Interpolation kMode = Interpolation::perspective>
 std::size_t draw_facets_in_perspective(Framebuffer& colour, DepthBuffer* depth_buffer, const PerspectiveCamera& camera,
-                                       const Mesh& mesh, const Shader& shader) {
+                                       const Mesh& mesh, const Shader& shader, double band = kGuardBandPixels) {
     using Varying = typename Shader::Varying;
     check_drawable(colour, depth_buffer, mesh);
     if (camera.width() != colour.width() || camera.height() != colour.height()) {
         throw std::invalid_argument("camera and framebuffer differ in size");
     }
-    const ClipPlanes frustum(colour.width(), colour.height());
+    const ClipPlanes frustum(colour.width(), colour.height(), band);
     std::vector<glm::dvec4> clip;
     clip.reserve(mesh.positions.size());
     for (const glm::vec3& position : mesh.positions) clip.push_back(camera.clip_from_world(position));
     const std::vector<Varying> varyings = vertex_varyings(shader, mesh);
     std::size_t drawn = 0;
     for (const Facet& facet : mesh.facets) {
+        const std::array<glm::dvec4, 3> at{clip[facet.corners[0]], clip[facet.corners[1]], clip[facet.corners[2]]};
+        if (frustum.inside_all(at[0]) && frustum.inside_all(at[1]) && frustum.inside_all(at[2])) {
+            // Most facets need no clipping: cull them before any shading work.
+            std::array<ShadedCorner<Varying>, 3> corners{};
+            bool usable = true;
+            for (std::size_t k = 0; k < 3 && usable; ++k) {
+                const std::optional<SubpixelPoint> point = snap_to_subpixel(camera.screen_from_clip(at[k]));
+                usable = point.has_value();
+                if (usable) corners[k].at = *point, corners[k].depth = static_cast<float>(at[k].w);
+            }
+            const std::array<SubpixelPoint, 3> points{corners[0].at, corners[1].at, corners[2].at};
+            if (!usable || twice_signed_area(points) <= 0) continue;  // facing away or edge-on
+            const std::array<Varying, 3> values = facet_varyings(shader, mesh, facet, varyings);
+            for (std::size_t k = 0; k < 3; ++k) corners[k].varying = values[k];
+            shade_triangle<Shader, FloatDepth, kMode>(colour, depth_buffer, corners, shader);
+            ++drawn;
+            continue;
+        }
         const std::array<Varying, 3> values = facet_varyings(shader, mesh, facet, varyings);
-        const ClippedPolygon<Varying> polygon =
-            clip_triangle(frustum, ClipVertex<Varying>{clip[facet.corners[0]], values[0]},
-                          ClipVertex<Varying>{clip[facet.corners[1]], values[1]}, ClipVertex<Varying>{clip[facet.corners[2]], values[2]});
+        const ClippedPolygon<Varying> polygon = clip_triangle(frustum, ClipVertex<Varying>{at[0], values[0]},
+                                                              ClipVertex<Varying>{at[1], values[1]},
+                                                              ClipVertex<Varying>{at[2], values[2]});
         std::array<ShadedCorner<Varying>, kMaxClippedCorners> corners{};
         bool usable = polygon.size >= 3;
         for (std::size_t k = 0; k < polygon.size && usable; ++k) {
             const ClipVertex<Varying>& vertex = polygon.corners[k];
-            const std::optional<SubpixelPoint> at = snap_to_subpixel(camera.screen_from_clip(vertex.clip));
-            usable = at.has_value();  // inside the guard band, so only NaN fails here
-            if (usable) corners[k] = {*at, static_cast<float>(vertex.clip.w), vertex.varying};
+            const std::optional<SubpixelPoint> point = snap_to_subpixel(camera.screen_from_clip(vertex.clip));
+            usable = point.has_value();  // inside the guard band, so only NaN fails here
+            if (usable) corners[k] = {*point, static_cast<float>(vertex.clip.w), vertex.varying};
         }
         if (!usable) continue;
         // A fan over the clipped polygon; every piece keeps the facet's winding, so each is culled
@@ -46,7 +65,7 @@ std::size_t draw_facets_in_perspective(Framebuffer& colour, DepthBuffer* depth_b
             const std::array<ShadedCorner<Varying>, 3> piece{corners[0], corners[k], corners[k + 1]};
             const std::array<SubpixelPoint, 3> points{piece[0].at, piece[1].at, piece[2].at};
             if (twice_signed_area(points) <= 0) continue;  // facing away or edge-on
-            shade_triangle<Shader, FloatDepth, Interpolation::perspective>(colour, depth_buffer, piece, shader);
+            shade_triangle<Shader, FloatDepth, kMode>(colour, depth_buffer, piece, shader);
             any = true;
         }
         drawn += any ? 1 : 0;

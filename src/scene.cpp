@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 namespace raster {
 
@@ -87,17 +89,19 @@ std::size_t render(Framebuffer& framebuffer, const PerspectiveScene& scene, Dept
 }
 
 PerspectiveScene in_perspective(const Scene& scene, int width, int height, double fov_degrees) {
+    if (!(fov_degrees > 0.0 && fov_degrees < 180.0)) {
+        throw std::invalid_argument("field of view must be between 0 and 180 degrees, got " + std::to_string(fov_degrees));
+    }
     const OrthoCamera& flat = scene.camera;
-    const glm::dvec3 eye(flat.eye()), ahead(flat.direction());
-    const double to_origin = glm::dot(-eye, ahead);
+    const double to_origin = flat.view_from_world(glm::vec3(0.0F)).z;
     // Pixels per world unit match the orthographic camera's on the plane through the origin.
     const double half_angle = fov_degrees * std::numbers::pi / 360.0;
     const double distance = height / (2.0 * std::max(flat.scale(), 0.5) * std::tan(half_angle));
-    const glm::dvec3 moved = eye + (to_origin - distance) * ahead;
     const PerspectiveCamera::Lens lens{fov_degrees, distance / 100.0, distance + 100.0};
-    // A target as far off as the eye itself, so that both stay apart as floats.
-    const glm::dvec3 target = moved + ahead * std::max(1.0, glm::length(moved));
-    const PerspectiveCamera camera = PerspectiveCamera::look_at(width, height, glm::vec3(moved), glm::vec3(target), flat.up(), lens);
+    // The same axes, the eye moved in double precision: no rounding through floats on the way.
+    const OrthoCamera moved = flat.dollied(to_origin - distance);
+    if (!std::isfinite(glm::length(glm::dvec3(moved.eye())))) throw std::invalid_argument("camera eye is too far out to move back");
+    const PerspectiveCamera camera = PerspectiveCamera::from_view(moved, width, height, lens);
     return {camera, scene.background, scene.lights, scene.point_lights, scene.objects};
 }
 

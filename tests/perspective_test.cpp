@@ -52,20 +52,23 @@ std::size_t draw(Framebuffer& image, const PerspectiveCamera& camera, std::vecto
 
 const std::map<char, raster::Rgb> kWhite{{'#', {255, 255, 255}}};
 
-// Records where the world position it is handed projects, and writes that pixel as a colour.
+// Keeps every world point it shades and writes its index as the colour, in 24 bits.
 struct Recorder {
     using Varying = glm::vec3;
     static constexpr bool kFacetNormal = false;
-    const PerspectiveCamera* camera;
-    std::vector<glm::dvec2>* seen;
+    std::vector<glm::vec3>* seen;
     [[nodiscard]] Varying vertex(const raster::Corner& corner) const noexcept { return corner.position; }
     [[nodiscard]] raster::Rgb pixel(const glm::vec3& world) const noexcept {
-        const glm::dvec2 at = camera->screen_from_clip(camera->clip_from_world(world));
-        seen->push_back(at);
-        // The pixel's own coordinates travel in the colour, so the test can compare.
-        return {static_cast<std::uint8_t>(std::lround(at.x)), static_cast<std::uint8_t>(std::lround(at.y)), 7};
+        const auto index = static_cast<std::uint32_t>(seen->size());
+        seen->push_back(world);
+        return {static_cast<std::uint8_t>(index >> 16), static_cast<std::uint8_t>(index >> 8), static_cast<std::uint8_t>(index)};
     }
 };
+
+std::uint32_t index_at(const Framebuffer& image, int x, int y) {
+    const raster::Rgb c = image.pixel(x, y);
+    return (std::uint32_t{c.r} << 16) | (std::uint32_t{c.g} << 8) | c.b;
+}
 
 }  // namespace
 
@@ -166,8 +169,27 @@ TEST(Clipping, ATriangleCrossingTheEyeDrawsItsPartInFrontOfTheNearPlane) {
 TEST(Clipping, HugeTrianglesAreClippedToTheGuardBandAndCoverTheScreen) {
     Framebuffer image(16, 12);
     const float far = 1e7F;
-    EXPECT_EQ(draw(image, ahead(16, 12), {triangle({-far, -far, 1}, {0, far, 1}, {far, -far, 1})}), 1U);
+    const raster::Mesh huge = triangle({-far, -far, 1}, {0, far, 1}, {far, -far, 1});
+    EXPECT_EQ(draw(image, ahead(16, 12), {huge}), 1U);
     EXPECT_TRUE(looks_like(image, std::vector<std::string>(12, "################"), kWhite));
+    std::vector<glm::vec3> seen;
+    raster::detail::draw_facets_in_perspective(image, nullptr, ahead(16, 12), huge, Recorder{&seen});
+    EXPECT_EQ(seen.size(), 16U * 12U);
+}
+
+// A floor triangle reaching beyond the far plane draws the same pixels as its part nearer than
+// far, cut by hand.
+TEST(Clipping, ATriangleCrossingTheFarPlaneDrawsItsPartNearerThanFar) {
+    const PerspectiveCamera camera = ahead(32, 24, {90.0, 0.1, 10.0});
+    const glm::vec3 a{-12, -4, 5}, b{0, -4, 15}, c{12, -4, 5};  // b is beyond far
+    Framebuffer clipped(32, 24), by_hand(32, 24);
+    EXPECT_EQ(draw(clipped, camera, {triangle(a, b, c)}), 1U);
+    const glm::vec3 ab = a + (b - a) * 0.5F, cb = c + (b - c) * 0.5F;  // where the edges reach z = 10
+    draw(by_hand, camera, {triangle(a, ab, cb), triangle(a, cb, c)});
+    EXPECT_EQ(clipped, by_hand) << test_support::to_ascii_art(clipped, kWhite) << "\n" << test_support::to_ascii_art(by_hand, kWhite);
+    Framebuffer whole(32, 24);
+    draw(whole, ahead(32, 24, {90.0, 0.1, 100.0}), {triangle(a, b, c)});
+    EXPECT_NE(clipped, whole);  // with a farther far plane more of it shows
 }
 
 // Under perspective, attributes are interpolated through 1/w: the world position a shader sees
@@ -178,24 +200,29 @@ TEST(PerspectiveInterpolation, TheSurfacePointAtEveryPixelIsOnItsLineOfSight) {
     raster::Mesh floor = raster::ground_quad({-2, 0, 0}, {2, 0, 0}, {2, 0, 20}, {-2, 0, 20});
     floor.surface = raster::Surface::smooth;
     Framebuffer image(40, 30);
-    std::vector<glm::dvec2> seen;
-    EXPECT_GT(raster::detail::draw_facets_in_perspective(image, nullptr, camera, floor, Recorder{&camera, &seen}), 0U);
+    std::vector<glm::vec3> seen;
+    image.clear({255, 255, 255});
+    raster::DepthBuffer depth;
+    depth.prepare(40, 30);
+    EXPECT_GT(raster::detail::draw_facets_in_perspective(image, &depth, camera, floor, Recorder{&seen}), 0U);
     ASSERT_GT(seen.size(), 100U);
     // Every written pixel's point projects back onto that pixel's centre, to within the 1/256 px
-    // the corners were snapped by; interpolating linearly on screen would be pixels off here.
-    int written = 0;
+    // the corners were snapped by (interpolating linearly on screen would be pixels off here),
+    // and the depth buffer holds that point's view depth.
+    double worst = 0.0;
+    std::size_t written = 0;
     for (int y = 0; y < 30; ++y) {
         for (int x = 0; x < 40; ++x) {
-            const raster::Rgb c = image.pixel(x, y);
-            if (c.b != 7) continue;
+            const std::uint32_t index = index_at(image, x, y);
+            if (index >= seen.size()) continue;
             ++written;
-            EXPECT_EQ(c.r, x) << x << ", " << y;
-            EXPECT_EQ(c.g, y) << x << ", " << y;
+            const glm::dvec2 at = camera.screen_from_clip(camera.clip_from_world(seen[index]));
+            worst = std::max({worst, std::abs(at.x - x), std::abs(at.y - y)});
+            const double view_depth = camera.view_from_world(seen[index]).z;
+            EXPECT_NEAR(depth.at(x, y), view_depth, 1e-5 * view_depth) << x << ", " << y;
         }
     }
-    EXPECT_EQ(static_cast<std::size_t>(written), seen.size());
-    double worst = 0.0;
-    for (const glm::dvec2& at : seen) worst = std::max({worst, std::abs(at.x - std::round(at.x)), std::abs(at.y - std::round(at.y))});
+    EXPECT_EQ(written, seen.size());  // each pixel shaded once
     EXPECT_LT(worst, 1.0 / 256);
 }
 

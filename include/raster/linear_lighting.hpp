@@ -82,7 +82,7 @@ public:
     // clamps it. Inline: it runs at every pixel of a Phong surface.
     [[nodiscard]] LinearRgb shade(glm::vec3 position, glm::vec3 normal) const noexcept {
         if (glm::dot(normal, normal) == 0.0F) return material_.emissive;
-        const glm::vec3 to_eye = eye_ ? unit_or_zero(*eye_ - position) : to_eye_;
+        const glm::vec3 to_eye = eye_ ? toward_point(*eye_, position).unit : to_eye_;
         float diffuse = 0.0F, specular = 0.0F;
         for (const PreparedLight& light : directional_) {
             diffuse += light.intensity * std::max(0.0F, glm::dot(normal, light.toward));

@@ -45,6 +45,12 @@ public:
     [[nodiscard]] glm::vec3 direction() const noexcept { return glm::vec3(forward_); }
     [[nodiscard]] glm::vec3 eye() const noexcept { return glm::vec3(eye_); }
     [[nodiscard]] glm::vec3 up() const noexcept { return glm::vec3(up_); }
+    // The same camera with its eye moved `distance` along its view, all in double precision.
+    [[nodiscard]] OrthoCamera dollied(double distance) const noexcept {
+        OrthoCamera moved = *this;
+        moved.eye_ += distance * forward_;
+        return moved;
+    }
 
     // Pixels per world unit: (min(width, height) - 1) / 2.
     [[nodiscard]] double scale() const noexcept { return scale_; }

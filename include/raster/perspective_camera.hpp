@@ -19,8 +19,8 @@ class PerspectiveCamera {
 public:
     struct Lens {
         double fov_y_degrees = 60.0;  // vertical field of view, 0 < fov < 180
-        double near = 0.1;            // distance to the near plane, > 0
-        double far = 100.0;           // distance to the far plane, > near, finite
+        double near = 0.1;            // distance to the near plane, 1e-18 or more
+        double far = 100.0;           // distance to the far plane, > near, 1e18 at most
     };
 
     // Throws std::invalid_argument for sizes outside 1..kMaxSubpixelCoordinate, a lens out of
@@ -28,7 +28,12 @@ public:
     [[nodiscard]] static PerspectiveCamera look_at(int width, int height, glm::vec3 eye, glm::vec3 target,
                                                    glm::vec3 up, Lens lens);
     // raster-engine's first-person form: yaw turns from +Z toward +X about +Y, pitch raises the
-    // view toward +Y; both in radians, |pitch| < pi/2.
+    // view toward +Y; both in radians, |pitch| < pi/2 (within about 1e-9 of it the view runs
+    // along +Y and look_at refuses it).
+    // Looks along an orthographic camera's axes from its eye, bit for bit.
+    [[nodiscard]] static PerspectiveCamera from_view(const OrthoCamera& view, int width, int height, Lens lens) {
+        return {view, width, height, lens};
+    }
     [[nodiscard]] static PerspectiveCamera first_person(int width, int height, glm::vec3 eye, double pitch, double yaw,
                                                         Lens lens);
 

@@ -1,0 +1,331 @@
+// perspective-lab: the choices of the perspective pipeline measured against exact answers.
+//  1. Interpolation: affine (linear on screen) against through 1/w, on a floor seen at grazing
+//     angles, as the error of texture coordinates in texels against the ray-cast truth, and time.
+//  2. Clipping: all six planes against near and far with a guard band: pixel equality and time.
+//  3. Depth: which encodings of depth keep two close surfaces in order as far / near grows.
+// Writes perspective-*.csv and perspective-summary.md; lab/perspective_charts.gp draws the charts.
+#include "clipped_facets.hpp"
+
+#include <raster/diary_scenes.hpp>
+#include <raster/scene.hpp>
+#include <raster/shapes.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <numbers>
+#include <string>
+#include <vector>
+
+namespace {
+
+constexpr int kWidth = 800, kHeight = 600;
+constexpr double kTexelsPerUnit = 256.0;  // a 256 x 256 texture repeated once per world unit
+
+std::string number(double v, const char* format) {
+    char text[64];
+    std::snprintf(text, sizeof text, format, v);
+    return text;
+}
+
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    return values[values.size() / 2];
+}
+
+// A floor at y = -1 from z = 0.5 to 40 and x = -20 to 20, split into n x n cells, seen from the
+// origin looking `degrees` below the horizon: the texture coordinates are world x and z.
+raster::Mesh floor_grid(int n) {
+    raster::Mesh mesh;
+    const float x0 = -20.0F, x1 = 20.0F, z0 = 0.5F, z1 = 40.0F;
+    for (int j = 0; j <= n; ++j) {
+        for (int i = 0; i <= n; ++i) {
+            const float u = static_cast<float>(i) / static_cast<float>(n), v = static_cast<float>(j) / static_cast<float>(n);
+            mesh.positions.emplace_back(x0 + (x1 - x0) * u, -1.0F, z0 + (z1 - z0) * v);
+            mesh.normals.emplace_back(0.0F, 1.0F, 0.0F);
+        }
+    }
+    const auto at = [n](int i, int j) { return static_cast<std::uint32_t>(j * (n + 1) + i); };
+    for (int j = 0; j < n; ++j) {
+        for (int i = 0; i < n; ++i) {  // clockwise seen from above
+            mesh.facets.push_back({{at(i, j), at(i, j + 1), at(i + 1, j + 1)}, {0, 1, 0}});
+            mesh.facets.push_back({{at(i, j), at(i + 1, j + 1), at(i + 1, j)}, {0, 1, 0}});
+        }
+    }
+    mesh.surface = raster::Surface::smooth;
+    mesh.convex = true;
+    return mesh;
+}
+
+raster::PerspectiveCamera grazing_camera(double degrees) {
+    return raster::PerspectiveCamera::first_person(kWidth, kHeight, {0, 0, 0}, -degrees * std::numbers::pi / 180.0, 0.0,
+                                                   {60.0, 0.1, 100.0});
+}
+
+// What a texture lookup costs at least: a checkerboard from the interpolated coordinates.
+struct Checkerboard {
+    using Varying = glm::vec3;
+    static constexpr bool kFacetNormal = false;
+    [[nodiscard]] Varying vertex(const raster::Corner& corner) const noexcept { return corner.position; }
+    [[nodiscard]] raster::Rgb pixel(const glm::vec3& world) const noexcept {
+        const bool dark = (static_cast<int>(std::floor(world.x * 8)) + static_cast<int>(std::floor(world.z * 8))) % 2 == 0;
+        return dark ? raster::Rgb{40, 40, 40} : raster::Rgb{220, 220, 220};
+    }
+};
+
+// The floor point seen at pixel centre (i, j), or nothing above the horizon.
+std::optional<glm::dvec2> floor_at(const raster::PerspectiveCamera& camera, int i, int j) {
+    // Invert the viewport and projection: a direction in view space, then in the world.
+    const double t = std::tan(camera.lens().fov_y_degrees * std::numbers::pi / 360.0);
+    const double x_ndc = (i + 0.5) * 2.0 / kWidth - 1.0, y_ndc = 1.0 - (j + 0.5) * 2.0 / kHeight;
+    const glm::dvec3 forward(camera.direction());
+    const glm::dvec3 right = glm::normalize(glm::cross(glm::dvec3(0, 1, 0), forward));
+    const glm::dvec3 up = glm::cross(forward, right);
+    const glm::dvec3 ray = forward + right * (x_ndc * t * kWidth / kHeight) + up * (y_ndc * t);
+    if (!(ray.y < 0.0)) return std::nullopt;
+    const double s = -1.0 / ray.y;  // from the eye at the origin down to y = -1
+    return glm::dvec2(ray.x * s, ray.z * s);
+}
+
+// Keeps every world point it shades and writes its index as the colour, in 24 bits.
+struct Recorder {
+    using Varying = glm::vec3;
+    static constexpr bool kFacetNormal = false;
+    std::vector<glm::vec3>* seen;
+    [[nodiscard]] Varying vertex(const raster::Corner& corner) const noexcept { return corner.position; }
+    [[nodiscard]] raster::Rgb pixel(const glm::vec3& world) const noexcept {
+        const auto index = static_cast<std::uint32_t>(seen->size());
+        seen->push_back(world);
+        return {static_cast<std::uint8_t>(index >> 16), static_cast<std::uint8_t>(index >> 8), static_cast<std::uint8_t>(index)};
+    }
+};
+
+struct InterpolationRow {
+    std::string method;
+    int cells;
+    double degrees;
+    double worst_texels, mean_texels, ms;
+};
+
+// Renders the floor and, for every covered pixel, compares the world point its colour came from:
+// the framebuffer keeps an index into the points the shader saw, in 24 bits.
+InterpolationRow measure_interpolation(bool perspective, int cells, double degrees) {
+    const raster::PerspectiveCamera camera = grazing_camera(degrees);
+    const raster::Mesh mesh = floor_grid(cells);
+    raster::Framebuffer image(kWidth, kHeight);
+    std::vector<glm::vec3> seen;
+    const auto draw = [&](const auto& shader) {
+        if (perspective) {
+            raster::detail::draw_facets_in_perspective(image, nullptr, camera, mesh, shader);
+        } else {
+            raster::detail::draw_facets_in_perspective<std::decay_t<decltype(shader)>, raster::detail::Interpolation::screen_linear>(
+                image, nullptr, camera, mesh, shader);
+        }
+    };
+    image.clear({255, 255, 255});
+    draw(Recorder{&seen});
+    InterpolationRow row{perspective ? "perspective" : "affine", cells, degrees, 0.0, 0.0, 0.0};
+    long count = 0;
+    for (int j = 0; j < kHeight; ++j) {
+        for (int i = 0; i < kWidth; ++i) {
+            const raster::Rgb c = image.pixel(i, j);
+            const std::uint32_t index = (std::uint32_t{c.r} << 16) | (std::uint32_t{c.g} << 8) | c.b;
+            if (index >= seen.size()) continue;  // background
+            const std::optional<glm::dvec2> truth = floor_at(camera, i, j);
+            if (!truth) continue;
+            const double error = glm::distance(glm::dvec2(seen[index].x, seen[index].z), *truth) * kTexelsPerUnit;
+            row.worst_texels = std::max(row.worst_texels, error);
+            row.mean_texels += error;
+            ++count;
+        }
+    }
+    row.mean_texels /= static_cast<double>(std::max(count, 1L));
+    // Time: the checkerboard shader, median of 31 frames.
+    std::vector<double> times;
+    for (int r = 0; r < 31; ++r) {
+        const auto start = std::chrono::steady_clock::now();
+        draw(Checkerboard{});
+        times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    }
+    row.ms = median(times);
+    return row;
+}
+
+struct ClippingRow {
+    std::string scene;
+    int fov;
+    long differing;
+    double six_plane_ms, guard_band_ms;
+};
+
+ClippingRow measure_clipping(std::string_view name, int fov) {
+    const raster::Scene flat = raster::DiaryScene(name).still(kWidth, kHeight);
+    const raster::PerspectiveScene scene = raster::in_perspective(flat, kWidth, kHeight, fov);
+    const auto draw = [&](raster::Framebuffer& image, double band) {
+        image.clear(scene.background);
+        raster::DepthBuffer depth;
+        depth.prepare(kWidth, kHeight);
+        for (const raster::SceneObject& object : scene.objects) {
+            const raster::Mesh mesh = raster::posed(*object.mesh, object.model);
+            const raster::LinearLighting lighting(std::get<raster::PhongMaterial>(object.material), scene.lights,
+                                                  scene.point_lights, -scene.camera.direction(), scene.camera.eye());
+            raster::detail::draw_facets_in_perspective(image, &depth, scene.camera, mesh, raster::LinearPhongShader{&lighting}, band);
+        }
+    };
+    raster::Framebuffer six(kWidth, kHeight), guard(kWidth, kHeight);
+    std::vector<double> six_ms, guard_ms;
+    for (int r = 0; r < 31; ++r) {  // interleaved
+        auto start = std::chrono::steady_clock::now();
+        draw(six, 0.0);
+        six_ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+        start = std::chrono::steady_clock::now();
+        draw(guard, raster::detail::kGuardBandPixels);
+        guard_ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    }
+    long differing = 0;
+    for (int j = 0; j < kHeight; ++j) {
+        for (int i = 0; i < kWidth; ++i) differing += six.pixel(i, j) != guard.pixel(i, j) ? 1 : 0;
+    }
+    return {std::string(name), fov, differing, median(six_ms), median(guard_ms)};
+}
+
+// Two floors 1e-5 apart seen from 1 above the nearer, looking 10 degrees down: at each pixel the
+// nearer floor must win. Each encoding turns the exact view depths of both into what a buffer
+// would store; a pixel is wrong when the farther floor's code is not larger.
+struct DepthEncoding {
+    std::string name;
+    double (*code)(double w, double near, double far);
+};
+
+float as_float(double v) { return static_cast<float>(v); }
+
+const std::vector<DepthEncoding>& encodings() {
+    static const std::vector<DepthEncoding> all{
+        {"w as float (product)", [](double w, double, double) { return double{as_float(w)}; }},
+        {"z/w as float", [](double w, double n, double f) { return double{as_float(f * (w - n) / ((f - n) * w))}; }},
+        {"reversed z/w as float", [](double w, double n, double f) { return -double{as_float(n * (f - w) / ((f - n) * w))}; }},
+        {"z/w in 24-bit fixed", [](double w, double n, double f) { return std::floor(f * (w - n) / ((f - n) * w) * 16777215.0 + 0.5); }},
+        {"1/w as float", [](double w, double, double) { return -double{as_float(1.0 / w)}; }},
+    };
+    return all;
+}
+
+struct DepthRow {
+    std::string encoding;
+    double ratio;
+    long wrong, compared;
+};
+
+std::vector<DepthRow> measure_depth() {
+    std::vector<DepthRow> rows;
+    const double gap = 1e-5, far = 1000.0;
+    const raster::PerspectiveCamera camera = grazing_camera(10.0);
+    for (const double ratio : {1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7}) {
+        const double near = far / ratio;
+        for (const DepthEncoding& encoding : encodings()) {
+            DepthRow row{encoding.name, ratio, 0, 0};
+            for (int j = 0; j < kHeight; ++j) {
+                for (int i = 0; i < kWidth; ++i) {
+                    const std::optional<glm::dvec2> hit = floor_at(camera, i, j);
+                    if (!hit) continue;
+                    // View depth along the camera's forward axis, for the floor at y = -1 and the
+                    // one `gap` below it: the same ray, scaled by the heights.
+                    const glm::dvec3 point(hit->x, -1.0, hit->y);
+                    const double w_near = glm::dot(point, glm::dvec3(camera.direction()));
+                    const double w_far = w_near * (1.0 + gap);
+                    if (w_near < near || w_far > far) continue;
+                    ++row.compared;
+                    if (!(encoding.code(w_far, near, far) > encoding.code(w_near, near, far))) ++row.wrong;
+                }
+            }
+            rows.push_back(row);
+        }
+    }
+    return rows;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::filesystem::path out = "doc/lab";
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (arg.rfind("--out=", 0) != 0) {
+            std::cerr << "usage: perspective-lab [--out=DIR]\n";
+            return 2;
+        }
+        out = arg.substr(6);
+    }
+    std::filesystem::create_directories(out);
+
+    std::cerr << "perspective-lab: interpolation\n";
+    std::vector<InterpolationRow> interpolation;
+    for (const double degrees : {5.0, 20.0}) {
+        for (const int cells : {1, 2, 4, 8, 16, 32, 64}) interpolation.push_back(measure_interpolation(false, cells, degrees));
+        interpolation.push_back(measure_interpolation(true, 1, degrees));
+        interpolation.push_back(measure_interpolation(true, 64, degrees));
+    }
+    std::cerr << "perspective-lab: clipping\n";
+    std::vector<ClippingRow> clipping;
+    for (const int fov : {40, 90, 150}) {
+        for (const std::string_view name : {"point-light", "point-lights"}) clipping.push_back(measure_clipping(name, fov));
+    }
+    std::cerr << "perspective-lab: depth\n";
+    const std::vector<DepthRow> depth = measure_depth();
+
+    std::ofstream csv(out / "interpolation.csv");
+    csv << "method,cells,degrees,worst_texels,mean_texels,ms\n";
+    for (const InterpolationRow& r : interpolation) {
+        csv << r.method << ',' << r.cells << ',' << r.degrees << ',' << r.worst_texels << ',' << r.mean_texels << ',' << r.ms << '\n';
+    }
+    std::ofstream depth_csv(out / "depth-perspective.csv");
+    depth_csv << "ratio";
+    for (const DepthEncoding& e : encodings()) depth_csv << ',' << e.name;
+    depth_csv << '\n';
+    for (std::size_t k = 0; k < depth.size(); k += encodings().size()) {
+        depth_csv << depth[k].ratio;
+        for (std::size_t e = 0; e < encodings().size(); ++e) {
+            const DepthRow& r = depth[k + e];
+            depth_csv << ',' << static_cast<double>(r.wrong) / static_cast<double>(std::max(r.compared, 1L));
+        }
+        depth_csv << '\n';
+    }
+
+    std::ofstream summary(out / "perspective-summary.md");
+    summary << "# Perspective summary\n\nWritten by `perspective-lab` (`tools/bootstrap.sh lab`), " << kWidth << " x " << kHeight
+            << ".\n\n## Interpolation\n\nA floor 40 x 39.5 units (y = -1) seen from 1 above, looking 5 or 20 degrees down, "
+            << "60-degree field of view; texture coordinates are world x and z at 256 texels per unit. Error: distance "
+            << "between the coordinates a pixel is shaded with and where its line of sight meets the floor. Time: median "
+            << "of 31 frames with a checkerboard shader.\n\n| method | cells | looking down | worst (texels) | mean (texels) | ms |\n|---|---|---|---|---|---|\n";
+    for (const InterpolationRow& r : interpolation) {
+        summary << "| " << r.method << " | " << r.cells << " x " << r.cells << " | " << r.degrees << " deg | "
+                << number(r.worst_texels, "%.3f") << " | " << number(r.mean_texels, "%.3f") << " | " << number(r.ms, "%.2f") << " |\n";
+    }
+    summary << "\n## Clipping\n\nThe scene's still through `--perspective FOV`, Phong-shaded, depth-tested; all six planes "
+            << "(x and y clipped at the image) against near and far with the guard band (product). Time: median of 31 "
+            << "interleaved frames.\n\n| scene | fov | pixels that differ | six planes (ms) | guard band (ms) |\n|---|---|---|---|---|\n";
+    for (const ClippingRow& r : clipping) {
+        summary << "| " << r.scene << " | " << r.fov << " | " << r.differing << " | " << number(r.six_plane_ms, "%.2f")
+                << " | " << number(r.guard_band_ms, "%.2f") << " |\n";
+    }
+    summary << "\n## Depth\n\nTwo floors 1e-5 apart (relative), the nearer at y = -1, seen from the origin looking 10 degrees "
+            << "down, far = 1000; share of compared pixels where the encoding does not keep the nearer floor in front.\n\n| far / near |";
+    for (const DepthEncoding& e : encodings()) summary << ' ' << e.name << " |";
+    summary << "\n|---|";
+    for (std::size_t e = 0; e < encodings().size(); ++e) summary << "---|";
+    summary << '\n';
+    for (std::size_t k = 0; k < depth.size(); k += encodings().size()) {
+        summary << "| " << number(depth[k].ratio, "%.0e") << " |";
+        for (std::size_t e = 0; e < encodings().size(); ++e) {
+            const DepthRow& r = depth[k + e];
+            summary << ' ' << number(100.0 * static_cast<double>(r.wrong) / static_cast<double>(std::max(r.compared, 1L)), "%.2f") << " % |";
+        }
+        summary << '\n';
+    }
+    std::cerr << "perspective-lab: wrote interpolation.csv, depth-perspective.csv and perspective-summary.md in " << out.string() << "\n";
+    return 0;
+}
