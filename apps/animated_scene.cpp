@@ -8,7 +8,8 @@ int main(int argc, char** argv) {
     app.footer(scene_list() +
                "\nExamples:\n"
                "  animated-scene                           # two tumbling tori, 360 frames, 7.2 s\n"
-               "  animated-scene --scene orbit --effort fast orbit.webp");
+               "  animated-scene --scene orbit --effort fast orbit.webp\n"
+               "  animated-scene --scene point-light --perspective 60 lamp.webp");
     ExportOptions options{"animated-scene.webp"};
     add_export_options(app, options);
     std::string name;

@@ -5,10 +5,10 @@ int main(int argc, char** argv) {
     CLI::App app("Renders the still of one diary scene (0.0.8 to 0.1.7) to a lossless WebP.", "still-scene");
     app.footer(scene_list() +
                "\nExamples:\n"
-               "  still-scene                              # Phong beside Gouraud -> still-scene.webp\n"
+               "  still-scene                              # shaders -> still-scene.webp\n"
                "  still-scene --scene two-spheres spheres.webp\n"
                "  still-scene --scene point-light --perspective 50 lamp.webp\n"
-               "  still-scene --scene point-lights --detail auto --width 1920 --height 1080 torus.webp");
+               "  still-scene --scene materials --detail auto --width 1280 --height 720 m.webp");
     ExportOptions options{"still-scene.webp"};
     add_export_options(app, options);
     std::string name;

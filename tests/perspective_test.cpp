@@ -100,6 +100,10 @@ TEST(Perspective, FirstPersonYawTurnsTowardXAndPitchRaisesTheView) {
     EXPECT_NEAR(glm::distance(look(0, std::numbers::pi / 2), glm::vec3(1, 0, 0)), 0.0F, 1e-6F);
     EXPECT_NEAR(glm::distance(look(std::numbers::pi / 4, 0), glm::normalize(glm::vec3(0, 1, 1))), 0.0F, 1e-6F);
     EXPECT_EQ(PerspectiveCamera::first_person(64, 48, {1, 2, 3}, 0, 0, kRightAngle).eye(), glm::vec3(1, 2, 3));
+    // Far from the origin the direction still survives the look-at target's rounding to float.
+    const glm::vec3 far_view = PerspectiveCamera::first_person(64, 48, {1e6F, 5e5F, -3e6F}, 0.2, 0.3, kRightAngle).direction();
+    const glm::vec3 expected(std::sin(0.3) * std::cos(0.2), std::sin(0.2), std::cos(0.3) * std::cos(0.2));
+    EXPECT_LT(glm::distance(far_view, expected), 1e-6F);
 }
 
 TEST(Perspective, BadLensesAndPosesAreClearErrors) {
@@ -107,7 +111,8 @@ TEST(Perspective, BadLensesAndPosesAreClearErrors) {
     for (const PerspectiveCamera::Lens lens : {PerspectiveCamera::Lens{0, 0.1, 10}, PerspectiveCamera::Lens{180, 0.1, 10},
                                                PerspectiveCamera::Lens{nan, 0.1, 10}, PerspectiveCamera::Lens{60, 0, 10},
                                                PerspectiveCamera::Lens{60, -1, 10}, PerspectiveCamera::Lens{60, 1, 1},
-                                               PerspectiveCamera::Lens{60, 1, inf}, PerspectiveCamera::Lens{60, nan, 10}}) {
+                                               PerspectiveCamera::Lens{60, 1, inf}, PerspectiveCamera::Lens{60, nan, 10},
+                                               PerspectiveCamera::Lens{60, 1e-19, 10}, PerspectiveCamera::Lens{60, 1, 1e19}}) {
         EXPECT_THROW((void)ahead(8, 8, lens), std::invalid_argument) << lens.fov_y_degrees << " " << lens.near << " " << lens.far;
     }
     EXPECT_THROW((void)PerspectiveCamera::look_at(8, 8, {0, 0, 0}, {0, 0, 0}, {0, 1, 0}, kRightAngle), std::invalid_argument);
