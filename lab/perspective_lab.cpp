@@ -5,6 +5,7 @@
 //  3. Depth: which encodings of depth keep two close surfaces in order as far / near grows.
 // Writes perspective-*.csv and perspective-summary.md; lab/perspective_charts.gp draws the charts.
 #include "clipped_facets.hpp"
+#include "recording_shader.hpp"
 
 #include <raster/diary_scenes.hpp>
 #include <raster/scene.hpp>
@@ -91,19 +92,6 @@ std::optional<glm::dvec2> floor_at(const raster::PerspectiveCamera& camera, int 
     return glm::dvec2(ray.x * s, ray.z * s);
 }
 
-// Keeps every world point it shades and writes its index as the colour, in 24 bits.
-struct Recorder {
-    using Varying = glm::vec3;
-    static constexpr bool kFacetNormal = false;
-    std::vector<glm::vec3>* seen;
-    [[nodiscard]] Varying vertex(const raster::Corner& corner) const noexcept { return corner.position; }
-    [[nodiscard]] raster::Rgb pixel(const glm::vec3& world) const noexcept {
-        const auto index = static_cast<std::uint32_t>(seen->size());
-        seen->push_back(world);
-        return {static_cast<std::uint8_t>(index >> 16), static_cast<std::uint8_t>(index >> 8), static_cast<std::uint8_t>(index)};
-    }
-};
-
 struct InterpolationRow {
     std::string method;
     int cells;
@@ -127,13 +115,12 @@ InterpolationRow measure_interpolation(bool perspective, int cells, double degre
         }
     };
     image.clear({255, 255, 255});
-    draw(Recorder{&seen});
+    draw(lab::RecordingShader{&seen});
     InterpolationRow row{perspective ? "perspective" : "affine", cells, degrees, 0.0, 0.0, 0.0};
     long count = 0;
     for (int j = 0; j < kHeight; ++j) {
         for (int i = 0; i < kWidth; ++i) {
-            const raster::Rgb c = image.pixel(i, j);
-            const std::uint32_t index = (std::uint32_t{c.r} << 16) | (std::uint32_t{c.g} << 8) | c.b;
+            const std::uint32_t index = lab::recorded_index(image, i, j);
             if (index >= seen.size()) continue;  // background
             const std::optional<glm::dvec2> truth = floor_at(camera, i, j);
             if (!truth) continue;

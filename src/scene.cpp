@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -23,69 +24,66 @@ bool needs_depth(std::span<const SceneObject> objects) noexcept {
     return meshes > 1 || !convex;
 }
 
-std::size_t render(Framebuffer& framebuffer, const Scene& scene, DepthBuffer& depth) {
+namespace {
+
+// Lights one object by its material and hands `draw` the shader its shading method asks for.
+// `eye` is the viewer's position in perspective; orthographic views have `to_eye` alone.
+template <typename Draw>
+std::size_t draw_shaded(const SceneObject& object, std::span<const DirectionalLight> lights,
+                        std::span<const PointLight> points, glm::vec3 to_eye, std::optional<glm::vec3> eye, Draw draw) {
+    if (const auto* phase1 = std::get_if<Material>(&object.material)) {
+        // Phase 1's model has one viewer direction, the camera's, even in perspective.
+        const Lighting lighting(*phase1, lights, to_eye);
+        switch (object.shading) {
+        case ShadingMethod::flat: return draw(FlatShader{&lighting});
+        case ShadingMethod::gouraud: return draw(GouraudShader{&lighting});
+        case ShadingMethod::phong: return draw(PhongShader{&lighting});
+        }
+        return 0;
+    }
+    const LinearLighting lighting(std::get<PhongMaterial>(object.material), lights, points, to_eye, eye);
+    switch (object.shading) {
+    case ShadingMethod::flat: return draw(LinearFlatShader{&lighting});
+    case ShadingMethod::gouraud: return draw(LinearGouraudShader{&lighting});
+    case ShadingMethod::phong: return draw(LinearPhongShader{&lighting});
+    }
+    return 0;
+}
+
+// Clears to the background, prepares depth only when the scene needs it, and draws every posed
+// object through `draw_mesh_with(depth or nullptr, mesh, shader)`.
+template <typename Camera, typename DrawMesh>
+std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& scene, DepthBuffer& depth,
+                           std::optional<glm::vec3> eye, DrawMesh draw_mesh_with) {
     framebuffer.clear(scene.background);
     const bool depth_test = needs_depth(scene);
     if (depth_test) depth.prepare(framebuffer.width(), framebuffer.height());
-    const RenderTarget target{framebuffer, depth_test ? &depth : nullptr};
-    // Orthographic: the direction toward the viewer is the same at every pixel.
+    DepthBuffer* const tested = depth_test ? &depth : nullptr;
     const glm::vec3 to_eye = -scene.camera.direction();
     std::size_t drawn = 0;
     for (const SceneObject& object : scene.objects) {
         if (!object.mesh) continue;  // an object without a mesh shows nothing
         const Mesh mesh = posed(*object.mesh, object.model);
-        if (const auto* phase1 = std::get_if<Material>(&object.material)) {
-            const Lighting lighting(*phase1, scene.lights, to_eye);
-            switch (object.shading) {
-            case ShadingMethod::flat: drawn += draw_mesh(target, scene.camera, mesh, FlatShader{&lighting}); break;
-            case ShadingMethod::gouraud: drawn += draw_mesh(target, scene.camera, mesh, GouraudShader{&lighting}); break;
-            case ShadingMethod::phong: drawn += draw_mesh(target, scene.camera, mesh, PhongShader{&lighting}); break;
-            }
-            continue;
-        }
-        const LinearLighting lighting(std::get<PhongMaterial>(object.material), scene.lights, scene.point_lights, to_eye);
-        switch (object.shading) {
-        case ShadingMethod::flat: drawn += draw_mesh(target, scene.camera, mesh, LinearFlatShader{&lighting}); break;
-        case ShadingMethod::gouraud: drawn += draw_mesh(target, scene.camera, mesh, LinearGouraudShader{&lighting}); break;
-        case ShadingMethod::phong: drawn += draw_mesh(target, scene.camera, mesh, LinearPhongShader{&lighting}); break;
-        }
+        drawn += draw_shaded(object, scene.lights, scene.point_lights, to_eye, eye,
+                             [&](const auto& shader) { return draw_mesh_with(tested, mesh, shader); });
     }
     return drawn;
 }
 
+}  // namespace
+
+std::size_t render(Framebuffer& framebuffer, const Scene& scene, DepthBuffer& depth) {
+    // Orthographic: the direction toward the viewer is the same at every pixel.
+    return render_objects(framebuffer, scene, depth, std::nullopt, [&](DepthBuffer* tested, const Mesh& mesh, const auto& shader) {
+        return draw_mesh({framebuffer, tested}, scene.camera, mesh, shader);
+    });
+}
+
 std::size_t render(Framebuffer& framebuffer, const PerspectiveScene& scene, DepthBuffer& depth) {
-    framebuffer.clear(scene.background);
-    const bool depth_test = needs_depth(scene);
-    if (depth_test) depth.prepare(framebuffer.width(), framebuffer.height());
-    DepthBuffer* const target = depth_test ? &depth : nullptr;
-    const PerspectiveCamera& camera = scene.camera;
-    // Phase 1's model has one viewer direction: the camera's; Phase 2 takes it at every point.
-    const glm::vec3 ahead = -camera.direction();
-    std::size_t drawn = 0;
-    for (const SceneObject& object : scene.objects) {
-        if (!object.mesh) continue;
-        const Mesh mesh = posed(*object.mesh, object.model);
-        const auto draw = [&](const auto& shader) {
-            drawn += detail::draw_facets_in_perspective(framebuffer, target, camera, mesh, shader);
-        };
-        if (const auto* phase1 = std::get_if<Material>(&object.material)) {
-            const Lighting lighting(*phase1, scene.lights, ahead);
-            switch (object.shading) {
-            case ShadingMethod::flat: draw(FlatShader{&lighting}); break;
-            case ShadingMethod::gouraud: draw(GouraudShader{&lighting}); break;
-            case ShadingMethod::phong: draw(PhongShader{&lighting}); break;
-            }
-            continue;
-        }
-        const LinearLighting lighting(std::get<PhongMaterial>(object.material), scene.lights, scene.point_lights, ahead,
-                                      camera.eye());
-        switch (object.shading) {
-        case ShadingMethod::flat: draw(LinearFlatShader{&lighting}); break;
-        case ShadingMethod::gouraud: draw(LinearGouraudShader{&lighting}); break;
-        case ShadingMethod::phong: draw(LinearPhongShader{&lighting}); break;
-        }
-    }
-    return drawn;
+    // Phase 2 takes the direction toward the eye at every point.
+    return render_objects(framebuffer, scene, depth, scene.camera.eye(), [&](DepthBuffer* tested, const Mesh& mesh, const auto& shader) {
+        return detail::draw_facets_in_perspective(framebuffer, tested, scene.camera, mesh, shader);
+    });
 }
 
 PerspectiveScene in_perspective(const Scene& scene, int width, int height, double fov_degrees) {

@@ -7,6 +7,7 @@
 #include <raster/scene.hpp>
 #include <raster/shapes.hpp>
 
+#include "recording_shader.hpp"
 #include "support/picture.hpp"
 
 #include <cmath>
@@ -51,24 +52,6 @@ std::size_t draw(Framebuffer& image, const PerspectiveCamera& camera, std::vecto
 }
 
 const std::map<char, raster::Rgb> kWhite{{'#', {255, 255, 255}}};
-
-// Keeps every world point it shades and writes its index as the colour, in 24 bits.
-struct Recorder {
-    using Varying = glm::vec3;
-    static constexpr bool kFacetNormal = false;
-    std::vector<glm::vec3>* seen;
-    [[nodiscard]] Varying vertex(const raster::Corner& corner) const noexcept { return corner.position; }
-    [[nodiscard]] raster::Rgb pixel(const glm::vec3& world) const noexcept {
-        const auto index = static_cast<std::uint32_t>(seen->size());
-        seen->push_back(world);
-        return {static_cast<std::uint8_t>(index >> 16), static_cast<std::uint8_t>(index >> 8), static_cast<std::uint8_t>(index)};
-    }
-};
-
-std::uint32_t index_at(const Framebuffer& image, int x, int y) {
-    const raster::Rgb c = image.pixel(x, y);
-    return (std::uint32_t{c.r} << 16) | (std::uint32_t{c.g} << 8) | c.b;
-}
 
 }  // namespace
 
@@ -178,7 +161,7 @@ TEST(Clipping, HugeTrianglesAreClippedToTheGuardBandAndCoverTheScreen) {
     EXPECT_EQ(draw(image, ahead(16, 12), {huge}), 1U);
     EXPECT_TRUE(looks_like(image, std::vector<std::string>(12, "################"), kWhite));
     std::vector<glm::vec3> seen;
-    raster::detail::draw_facets_in_perspective(image, nullptr, ahead(16, 12), huge, Recorder{&seen});
+    raster::detail::draw_facets_in_perspective(image, nullptr, ahead(16, 12), huge, lab::RecordingShader{&seen});
     EXPECT_EQ(seen.size(), 16U * 12U);
 }
 
@@ -209,7 +192,7 @@ TEST(PerspectiveInterpolation, TheSurfacePointAtEveryPixelIsOnItsLineOfSight) {
     image.clear({255, 255, 255});
     raster::DepthBuffer depth;
     depth.prepare(40, 30);
-    EXPECT_GT(raster::detail::draw_facets_in_perspective(image, &depth, camera, floor, Recorder{&seen}), 0U);
+    EXPECT_GT(raster::detail::draw_facets_in_perspective(image, &depth, camera, floor, lab::RecordingShader{&seen}), 0U);
     ASSERT_GT(seen.size(), 100U);
     // Every written pixel's point projects back onto that pixel's centre, to within the 1/256 px
     // the corners were snapped by (interpolating linearly on screen would be pixels off here),
@@ -218,7 +201,7 @@ TEST(PerspectiveInterpolation, TheSurfacePointAtEveryPixelIsOnItsLineOfSight) {
     std::size_t written = 0;
     for (int y = 0; y < 30; ++y) {
         for (int x = 0; x < 40; ++x) {
-            const std::uint32_t index = index_at(image, x, y);
+            const std::uint32_t index = lab::recorded_index(image, x, y);
             if (index >= seen.size()) continue;
             ++written;
             const glm::dvec2 at = camera.screen_from_clip(camera.clip_from_world(seen[index]));
