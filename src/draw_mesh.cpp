@@ -21,5 +21,11 @@ std::size_t draw_mesh(RenderTarget t, const OrthoCamera& c, const Mesh& m, const
     return draw(t, c, m, s);
 }
 std::size_t draw_mesh(RenderTarget t, const OrthoCamera& c, const Mesh& m, const LinearPhongShader& s) { return draw(t, c, m, s); }
+std::size_t draw_mesh(RenderTarget t, const OrthoCamera& c, const Mesh& m, const UnlitShader& s) { return draw(t, c, m, s); }
+std::size_t draw_mesh(RenderTarget t, const OrthoCamera& c, const Mesh& m, const TexturedFlatShader& s) { return draw(t, c, m, s); }
+std::size_t draw_mesh(RenderTarget t, const OrthoCamera& c, const Mesh& m, const TexturedGouraudShader& s) {
+    return draw(t, c, m, s);
+}
+std::size_t draw_mesh(RenderTarget t, const OrthoCamera& c, const Mesh& m, const TexturedPhongShader& s) { return draw(t, c, m, s); }
 
 }  // namespace raster

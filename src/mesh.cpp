@@ -32,6 +32,7 @@ Mesh posed(const Mesh& mesh, const glm::mat4& model) {
     result.convex = mesh.convex;
     result.positions.reserve(mesh.positions.size());
     for (const glm::vec3& p : mesh.positions) result.positions.push_back(glm::vec3(model * glm::vec4(p, 1.0F)));
+    result.uvs = mesh.uvs;
     result.normals.reserve(mesh.normals.size());
     for (const glm::vec3& n : mesh.normals) result.normals.push_back(unit_or_zero(normal_matrix * n));
     // A mirror turns clockwise into counter-clockwise: swap two corners to keep the convention.

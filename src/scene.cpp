@@ -1,6 +1,7 @@
 #include <raster/scene.hpp>
 
 #include <raster/draw_mesh.hpp>
+#include <raster/textured_shaders.hpp>
 
 #include "clipped_facets.hpp"
 
@@ -38,16 +39,26 @@ std::size_t draw_shaded(const SceneObject& object, std::span<const DirectionalLi
         case ShadingMethod::flat: return draw(FlatShader{&lighting});
         case ShadingMethod::gouraud: return draw(GouraudShader{&lighting});
         case ShadingMethod::phong: return draw(PhongShader{&lighting});
+        case ShadingMethod::unlit: return draw(UnlitShader{{linear_from_srgb(phase1->base)}});
         }
         return 0;
     }
-    const LinearLighting lighting(std::get<PhongMaterial>(object.material), lights, points, to_eye, eye);
+    const PhongMaterial& material = std::get<PhongMaterial>(object.material);
+    const LinearLighting lighting(material, lights, points, to_eye, eye);
+    const DiffuseSource diffuse{material.diffuse, object.texture.get(), object.sampler};
+    if (object.shading == ShadingMethod::unlit) return draw(UnlitShader{diffuse});
+    if (object.texture) {  // the textured shaders read the texture at every pixel
+        switch (object.shading) {
+        case ShadingMethod::flat: return draw(TexturedFlatShader{&lighting, diffuse});
+        case ShadingMethod::gouraud: return draw(TexturedGouraudShader{&lighting, diffuse});
+        default: return draw(TexturedPhongShader{&lighting, diffuse});
+        }
+    }
     switch (object.shading) {
     case ShadingMethod::flat: return draw(LinearFlatShader{&lighting});
     case ShadingMethod::gouraud: return draw(LinearGouraudShader{&lighting});
-    case ShadingMethod::phong: return draw(LinearPhongShader{&lighting});
+    default: return draw(LinearPhongShader{&lighting});
     }
-    return 0;
 }
 
 // Clears to the background, prepares depth only when the scene needs it, and draws every posed

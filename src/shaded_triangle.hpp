@@ -45,6 +45,14 @@ struct WeightPlane {
         return (i * kSubpixelOne - x0) * per_subpixel_x + (j * kSubpixelOne - y0) * per_subpixel_y;
     }
     [[nodiscard]] double per_pixel_x() const noexcept { return per_subpixel_x * kSubpixelOne; }
+    [[nodiscard]] double per_pixel_y() const noexcept { return per_subpixel_y * kSubpixelOne; }
+};
+
+// A shader whose pixel stage also takes how its Varying changes per pixel step in x and in y:
+// texture filtering chooses its mip level from that.
+template <typename Shader>
+concept NeedsFootprint = requires(const Shader& shader, const typename Shader::Varying& varying) {
+    shader.pixel(varying, varying, varying);
 };
 
 // Weights of corners 1 and 2: w1 = ((P - p0) x b) / (a x b), w2 = (a x (P - p0)) / (a x b),
@@ -78,6 +86,7 @@ void shade_triangle(Framebuffer& colour, DepthBuffer* depth,
     const Varying along1 = corners[1].varying - base;
     const Varying along2 = corners[2].varying - base;
     const Varying step = along1 * static_cast<float>(w1.per_pixel_x()) + along2 * static_cast<float>(w2.per_pixel_x());
+    const Varying step_y = along1 * static_cast<float>(w1.per_pixel_y()) + along2 * static_cast<float>(w2.per_pixel_y());
     const double z0 = corners[0].depth;
     const double z1 = corners[1].depth - z0, z2 = corners[2].depth - z0;
     const auto z_step = static_cast<float>(z1 * w1.per_pixel_x() + z2 * w2.per_pixel_x());
@@ -99,7 +108,20 @@ void shade_triangle(Framebuffer& colour, DepthBuffer* depth,
                     if (z > nearest[x - span.x_begin]) continue;  // something nearer is already there
                     nearest[x - span.x_begin] = z;
                 }
-                const Rgb c = shader.pixel(base + along1 * static_cast<float>(q1 / sum) + along2 * static_cast<float>(q2 / sum));
+                const double t1 = q1 / sum, t2 = q2 / sum;
+                const Varying varying = base + along1 * static_cast<float>(t1) + along2 * static_cast<float>(t2);
+                Rgb c;
+                if constexpr (NeedsFootprint<Shader>) {
+                    // The derivative of (q_k / sum) along a screen step that moves a by da and b by db.
+                    const auto change = [&](double da, double db) {
+                        const double dsum = (-da - db) * inv0 + da * inv1 + db * inv2;
+                        return along1 * static_cast<float>((da * inv1 - t1 * dsum) / sum) +
+                               along2 * static_cast<float>((db * inv2 - t2 * dsum) / sum);
+                    };
+                    c = shader.pixel(varying, change(w1.per_pixel_x(), w2.per_pixel_x()), change(w1.per_pixel_y(), w2.per_pixel_y()));
+                } else {
+                    c = shader.pixel(varying);
+                }
                 out[0] = c.r;
                 out[1] = c.g;
                 out[2] = c.b;
@@ -120,7 +142,12 @@ void shade_triangle(Framebuffer& colour, DepthBuffer* depth,
                 if (z > nearest[k]) continue;  // something nearer is already there
                 nearest[k] = z;
             }
-            const Rgb c = shader.pixel(varying);
+            Rgb c;
+            if constexpr (NeedsFootprint<Shader>) {
+                c = shader.pixel(varying, step, step_y);  // constant across the triangle
+            } else {
+                c = shader.pixel(varying);
+            }
             out[0] = c.r;
             out[1] = c.g;
             out[2] = c.b;
@@ -138,6 +165,10 @@ inline void check_drawable(const Framebuffer& colour, const DepthBuffer* depth_b
         throw std::invalid_argument("mesh has " + std::to_string(mesh.normals.size()) + " normals for " +
                                     std::to_string(mesh.positions.size()) + " positions");
     }
+    if (!mesh.uvs.empty() && mesh.uvs.size() != mesh.positions.size()) {
+        throw std::invalid_argument("mesh has " + std::to_string(mesh.uvs.size()) + " texture coordinates for " +
+                                    std::to_string(mesh.positions.size()) + " positions");
+    }
     for (const Facet& facet : mesh.facets) {
         for (const std::uint32_t corner : facet.corners) {
             if (corner >= mesh.positions.size()) throw std::invalid_argument("mesh facet names a missing vertex");
@@ -152,12 +183,19 @@ std::array<typename Shader::Varying, 3> facet_varyings(const Shader& shader, con
                                                        const std::vector<typename Shader::Varying>& per_vertex) {
     const std::array<glm::vec3, 3> at{mesh.positions[facet.corners[0]], mesh.positions[facet.corners[1]],
                                       mesh.positions[facet.corners[2]]};
-    if (Shader::kFacetNormal) {  // one value per facet, lit at its centroid
-        const auto shared = shader.vertex({at[0] / 3.0F + at[1] / 3.0F + at[2] / 3.0F, facet.normal});  // no overflow
-        return {shared, shared, shared};
+    const auto uv = [&](std::size_t k) { return mesh.uvs.empty() ? glm::vec2(0.0F) : mesh.uvs[facet.corners[k]]; };
+    if (Shader::kFacetNormal) {  // lit once per facet at its centroid; texture coordinates stay each corner's own
+        const glm::vec3 centroid = at[0] / 3.0F + at[1] / 3.0F + at[2] / 3.0F;  // no overflow
+        if (mesh.uvs.empty()) {
+            const auto shared = shader.vertex({centroid, facet.normal});
+            return {shared, shared, shared};
+        }
+        return {shader.vertex({centroid, facet.normal, uv(0)}), shader.vertex({centroid, facet.normal, uv(1)}),
+                shader.vertex({centroid, facet.normal, uv(2)})};
     }
     if (mesh.surface == Surface::faceted) {  // the facet's normal, each corner's own position
-        return {shader.vertex({at[0], facet.normal}), shader.vertex({at[1], facet.normal}), shader.vertex({at[2], facet.normal})};
+        return {shader.vertex({at[0], facet.normal, uv(0)}), shader.vertex({at[1], facet.normal, uv(1)}),
+                shader.vertex({at[2], facet.normal, uv(2)})};
     }
     return {per_vertex[facet.corners[0]], per_vertex[facet.corners[1]], per_vertex[facet.corners[2]]};
 }
@@ -168,7 +206,9 @@ std::vector<typename Shader::Varying> vertex_varyings(const Shader& shader, cons
     std::vector<typename Shader::Varying> varyings;
     if (Shader::kFacetNormal || mesh.surface == Surface::faceted) return varyings;
     varyings.reserve(mesh.positions.size());
-    for (std::size_t i = 0; i < mesh.positions.size(); ++i) varyings.push_back(shader.vertex({mesh.positions[i], mesh.normals[i]}));
+    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+        varyings.push_back(shader.vertex({mesh.positions[i], mesh.normals[i], mesh.uvs.empty() ? glm::vec2(0.0F) : mesh.uvs[i]}));
+    }
     return varyings;
 }
 

@@ -2,7 +2,12 @@
 #include <raster/scenes.hpp>
 #include <raster/webp.hpp>
 
+#include <raster/model_scene.hpp>
+#include <raster/obj_file.hpp>
+
 #include "support/golden.hpp"
+#include "support/model_files.hpp"
+#include "support/scratch.hpp"
 
 #include <cstdio>
 #include <cstdlib>
@@ -142,4 +147,37 @@ TEST(Golden, ReadmeTorusIsWhatAnimatedSceneDrawsToday) {
         return frame.image == expected;
     });
     EXPECT_EQ(shown, 180);
+}
+
+// What `render` draws of a model it reads: a textured crate on a floor, each shading, the
+// orthographic view, a turntable frame and each texture filter.
+TEST(Golden, ModelsThroughEachShadingAndView) {
+    const test_support::ScratchDir dir;
+    const auto model = std::make_shared<const raster::Model>(raster::read_obj(test_support::write_crate_on_floor(dir.path())));
+    struct Case {
+        std::string name;
+        raster::ModelView view;
+        double turn = 0.0;
+    };
+    std::vector<Case> cases;
+    for (const auto& [name, shading] : {std::pair{"phong", raster::ShadingMethod::phong}, std::pair{"gouraud", raster::ShadingMethod::gouraud},
+                                        std::pair{"flat", raster::ShadingMethod::flat}, std::pair{"unlit", raster::ShadingMethod::unlit}}) {
+        raster::ModelView view;
+        view.shading = shading;
+        cases.push_back({name, view});
+    }
+    raster::ModelView ortho;
+    ortho.orthographic = true;
+    cases.push_back({"ortho", ortho});
+    cases.push_back({"turned", raster::ModelView{}, 0.25 * 3.14159265358979});
+    raster::ModelView low;
+    low.eye = glm::dvec3(0.0, -0.6, 5.0);
+    low.fov_degrees = 60.0;
+    cases.push_back({"low-eye", low});
+    for (const Case& c : cases) {
+        Framebuffer image(160, 120);
+        raster::DepthBuffer depth;
+        raster::ModelStage(model, c.view, image.width(), image.height()).render(image, depth, c.turn);
+        EXPECT_TRUE(matches_snapshot(image, "models/crate-" + c.name));
+    }
 }

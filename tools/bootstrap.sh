@@ -9,8 +9,8 @@ usage: tools/bootstrap.sh COMMAND
                      (default out/animated-cube.webp, relative to where you are)
   test               build in Release and run every test
   sanitize           build with AddressSanitizer and UndefinedBehaviorSanitizer and run every test
-  fuzz [SECONDS]     build the libFuzzer targets with clang; fuzz fill and line, then the
-                     mesh pipeline, for SECONDS each (default 60)
+  fuzz [SECONDS]     build the libFuzzer targets with clang; fuzz fill and line, the mesh
+                     pipeline, then model and texture loading, for SECONDS each (default 60)
   lab                measure every raster method and redraw the charts in doc/lab/
   -h, --help         print this help
 Each command first installs the Debian 12 packages it needs that are missing (apt-get, with
@@ -18,7 +18,7 @@ sudo when not root).
 TXT
 }
 
-app_packages=(cmake g++ make pkg-config libglm-dev libwebp-dev libcli11-dev)
+app_packages=(cmake g++ make pkg-config libglm-dev libwebp-dev libstb-dev libtinyobjloader-dev libcli11-dev)
 base_packages=("${app_packages[@]}" libgtest-dev libbenchmark-dev webp)
 
 install_missing() {
@@ -70,7 +70,7 @@ fuzz)
     seconds="${2:-60}"
     install_missing "${base_packages[@]}" clang libclang-rt-14-dev
     build fuzz
-    for target in fuzz_raster fuzz_mesh; do
+    for target in fuzz_raster fuzz_mesh fuzz_model; do
         mkdir -p "build/fuzz/corpus/$target"
         build/fuzz/lab/$target -max_total_time="$seconds" -print_final_stats=1 "build/fuzz/corpus/$target"
     done

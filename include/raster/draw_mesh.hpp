@@ -5,6 +5,7 @@
 #include <raster/mesh.hpp>
 #include <raster/ortho_camera.hpp>
 #include <raster/shaders.hpp>
+#include <raster/textured_shaders.hpp>
 
 #include <cstddef>
 
@@ -27,5 +28,9 @@ std::size_t draw_mesh(RenderTarget target, const OrthoCamera& camera, const Mesh
 std::size_t draw_mesh(RenderTarget target, const OrthoCamera& camera, const Mesh& mesh, const LinearFlatShader& shader);
 std::size_t draw_mesh(RenderTarget target, const OrthoCamera& camera, const Mesh& mesh, const LinearGouraudShader& shader);
 std::size_t draw_mesh(RenderTarget target, const OrthoCamera& camera, const Mesh& mesh, const LinearPhongShader& shader);
+std::size_t draw_mesh(RenderTarget target, const OrthoCamera& camera, const Mesh& mesh, const UnlitShader& shader);
+std::size_t draw_mesh(RenderTarget target, const OrthoCamera& camera, const Mesh& mesh, const TexturedFlatShader& shader);
+std::size_t draw_mesh(RenderTarget target, const OrthoCamera& camera, const Mesh& mesh, const TexturedGouraudShader& shader);
+std::size_t draw_mesh(RenderTarget target, const OrthoCamera& camera, const Mesh& mesh, const TexturedPhongShader& shader);
 
 }  // namespace raster

@@ -81,7 +81,21 @@ public:
     // normal stands for "no normal": emissive only). Never NaN; may exceed 1 before the write
     // clamps it. Inline: it runs at every pixel of a Phong surface.
     [[nodiscard]] LinearRgb shade(glm::vec3 position, glm::vec3 normal) const noexcept {
-        if (glm::dot(normal, normal) == 0.0F) return material_.emissive;
+        return shade(position, normal, material_.diffuse);
+    }
+    // The same with another diffuse colour in place of the material's: a texture's, say.
+    [[nodiscard]] LinearRgb shade(glm::vec3 position, glm::vec3 normal, LinearRgb diffuse_colour) const noexcept {
+        const Received light = received(position, normal);
+        return material_.emissive + diffuse_colour * light.diffuse + material_.specular * light.specular;
+    }
+    // The light a surface point receives, before the material's colours: how much diffuse and
+    // how much specular light. Zero for a zero normal.
+    struct Received {
+        float diffuse = 0.0F;
+        float specular = 0.0F;
+    };
+    [[nodiscard]] Received received(glm::vec3 position, glm::vec3 normal) const noexcept {
+        if (glm::dot(normal, normal) == 0.0F) return {};
         const glm::vec3 to_eye = eye_ ? toward_point(*eye_, position).unit : to_eye_;
         float diffuse = 0.0F, specular = 0.0F;
         for (const PreparedLight& light : directional_) {
@@ -94,13 +108,13 @@ public:
         for (const PreparedPointLight& light : points_) {
             const Toward toward = toward_point(light.position, position);
             if (!(toward.distance > 0.0F)) continue;  // at the light itself: no direction to light from
-            const float received = attenuated(light, toward.distance);
-            diffuse += received * std::max(0.0F, glm::dot(normal, toward.unit));
+            const float arriving = attenuated(light, toward.distance);
+            diffuse += arriving * std::max(0.0F, glm::dot(normal, toward.unit));
             if (power_.enabled()) {
-                specular += received * power_(std::max(0.0F, glm::dot(normal, unit_or_zero(toward.unit + to_eye))));
+                specular += arriving * power_(std::max(0.0F, glm::dot(normal, unit_or_zero(toward.unit + to_eye))));
             }
         }
-        return material_.emissive + material_.diffuse * diffuse + material_.specular * specular;
+        return {diffuse, specular};
     }
 
     // Every light's factor is held within +-kBrightest, so that sums stay finite.

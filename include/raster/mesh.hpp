@@ -7,6 +7,7 @@
 #include <vector>
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 namespace raster {
@@ -22,7 +23,8 @@ struct Facet {
 // faceted one (a cube, a dodecahedron) gives every corner its facet's normal.
 enum class Surface { smooth, faceted };
 
-// An indexed triangle mesh: shared vertex positions with one normal each, and facets.
+// An indexed triangle mesh: shared vertex positions with one normal each (and one texture
+// coordinate each, or none at all), and facets.
 struct Mesh {
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;
@@ -31,6 +33,7 @@ struct Mesh {
     // No facet can hide another when back faces are culled, so it needs no depth buffer
     // (doc/conventions.md#depth).
     bool convex = false;
+    std::vector<glm::vec2> uvs{};  // empty, or one per position (doc/conventions.md#textures)
 };
 
 // The unit vector along v, or zero when v has no usable direction (zero, NaN, infinite).

@@ -8,6 +8,7 @@
 #include <raster/ortho_camera.hpp>
 #include <raster/perspective_camera.hpp>
 #include <raster/shapes.hpp>
+#include <raster/texture.hpp>
 
 #include <memory>
 #include <optional>
@@ -18,8 +19,9 @@
 
 namespace raster {
 
-// How an object's colour is computed: per facet, per vertex, or per pixel.
-enum class ShadingMethod { flat, gouraud, phong };
+// How an object's colour is computed: per facet, per vertex, or per pixel; or with no light at
+// all, its diffuse colour (or texture) as it is.
+enum class ShadingMethod { flat, gouraud, phong, unlit };
 
 // How a surface takes light: the diary's Phase 1 intensity on 8-bit colour, or Phase 2's
 // material colours in linear light (doc/conventions.md#light).
@@ -33,6 +35,10 @@ struct SceneObject {
     ShadingMethod shading = ShadingMethod::phong;
     // The true surface the mesh approximates, if any, so its detail can be chosen (auto_detail.hpp).
     std::optional<ShapeKind> shape{};
+    // A diffuse texture over the mesh's texture coordinates, multiplying a Phase 2 material's
+    // diffuse colour; Phase 1 materials ignore it.
+    std::shared_ptr<const Texture> texture{};
+    Sampler sampler{};
 };
 
 // Everything one frame shows, seen through an orthographic or a perspective camera.

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <span>
 #include <vector>
 
 // Lossless WebP: stills, animations, and reading either back. Files are written by
@@ -80,6 +81,14 @@ struct DecodedWebp {
     int height;
     std::vector<DecodedFrame> frames;  // a still decodes as one frame
 };
+
+// Whether bytes begin like a WebP file (a RIFF container of type WEBP).
+[[nodiscard]] bool looks_like_webp(std::span<const std::uint8_t> bytes) noexcept;
+
+// The picture of a still WebP file held in memory, alpha dropped. Throws std::runtime_error with
+// a one-line reason for bytes that are not a still WebP, or for more than `max_pixels` pixels
+// (checked from the header, before anything is decoded).
+[[nodiscard]] Framebuffer decode_webp_still(std::span<const std::uint8_t> bytes, std::size_t max_pixels);
 
 // Decodes every frame into memory; for long animations prefer for_each_webp_frame.
 [[nodiscard]] DecodedWebp read_webp(const std::filesystem::path& path);

@@ -58,5 +58,6 @@ inline const std::string kStillUnitCube = RASTER_STILL_UNIT_CUBE;
 inline const std::string kWebpFrame = RASTER_WEBP_FRAME;
 inline const std::string kStillScene = RASTER_STILL_SCENE;
 inline const std::string kAnimatedScene = RASTER_ANIMATED_SCENE;
+inline const std::string kRender = RASTER_RENDER;
 
 }  // namespace test_support

@@ -1,0 +1,46 @@
+#pragma once
+
+#include <raster/linear_lighting.hpp>
+#include <raster/mesh.hpp>
+#include <raster/texture.hpp>
+
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+#include <glm/vec3.hpp>
+
+// A model read from a file: one mesh per material, in raster's world (doc/conventions.md#models).
+namespace raster {
+
+struct ModelPart {
+    std::string material_name;  // empty for the default material
+    Mesh mesh;
+    PhongMaterial material;
+    std::shared_ptr<const Texture> texture{};  // the diffuse map, when it loaded
+    Sampler sampler{};
+};
+
+struct Model {
+    std::vector<ModelPart> parts;
+    // What was read but not used as the file asked, one line each, naming the file.
+    std::vector<std::string> warnings;
+};
+
+// The material of a model file without one: a light grey, no highlight (Blender's default diffuse).
+[[nodiscard]] PhongMaterial default_model_material() noexcept;
+
+[[nodiscard]] std::size_t triangle_count(const Model& model) noexcept;
+
+// The smallest axis-aligned box around every vertex the facets use, and a sphere around it.
+struct Bounds {
+    glm::dvec3 low;
+    glm::dvec3 high;
+    [[nodiscard]] glm::dvec3 centre() const noexcept { return (low + high) * 0.5; }
+    // Half the box's diagonal: a sphere of this radius about the centre holds the model.
+    [[nodiscard]] double radius() const noexcept;
+};
+// Throws std::invalid_argument for a model with no facets.
+[[nodiscard]] Bounds bounds_of(const Model& model);
+
+}  // namespace raster

@@ -1,0 +1,33 @@
+#pragma once
+
+#include <raster/model.hpp>
+#include <raster/texture_file.hpp>
+
+#include <cstdint>
+#include <filesystem>
+#include <string_view>
+
+// Wavefront OBJ models with their MTL materials and diffuse maps (doc/conventions.md#models).
+namespace raster {
+
+// The largest OBJ or MTL file read, in bytes.
+inline constexpr std::uintmax_t kMaxModelFileBytes = std::uintmax_t{1} << 30;
+
+struct ObjOptions {
+    // Normals the file lacks are made per corner: facets meeting at less than this angle are
+    // smoothed together, sharper edges stay creased (0: every facet flat).
+    double crease_degrees = 60.0;
+    bool load_textures = true;
+    std::size_t max_texels = kMaxTextureTexels;
+};
+
+// Reads an OBJ file, the MTL files it names (beside it) and their diffuse maps (relative to the
+// MTL file). Throws std::runtime_error with one line naming the file (and the face or line where
+// known) for a file it cannot use; problems it can work around become the model's warnings.
+[[nodiscard]] Model read_obj(const std::filesystem::path& path, const ObjOptions& options = {});
+
+// The same from text in memory, `mtl` standing for every material library the OBJ names; maps
+// are not loaded. For tests and fuzzing.
+[[nodiscard]] Model parse_obj(std::string_view obj, std::string_view mtl, ObjOptions options = {});
+
+}  // namespace raster

@@ -1,0 +1,64 @@
+// libFuzzer target: the model and texture loading path. Bytes become OBJ and MTL text (read by
+// parse_obj, then framed and drawn) or an image (decoded, then sampled with every filter). Bad
+// input may only ever be a std::runtime_error; nothing may crash, hang or overrun a buffer.
+#include <raster/model_scene.hpp>
+#include <raster/obj_file.hpp>
+#include <raster/texture_file.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <memory>
+#include <span>
+#include <stdexcept>
+#include <string_view>
+
+namespace {
+
+constexpr std::size_t kMaxTexels = 1 << 16;  // small, so the fuzzer spends its time on parsing
+
+void draw(const std::shared_ptr<const raster::Model>& model, raster::ShadingMethod shading) {
+    raster::ModelView view;
+    view.shading = shading;
+    try {
+        const raster::ModelStage stage(model, view, 24, 18);
+        raster::Framebuffer frame(24, 18);
+        raster::DepthBuffer depth;
+        stage.render(frame, depth, 0.5);
+    } catch (const std::invalid_argument&) {
+        // A model too large or too flat to frame is refused, never drawn wrong.
+    }
+}
+
+void sample_everywhere(const raster::Texture& texture) {
+    for (const raster::TextureFilter filter : {raster::TextureFilter::nearest, raster::TextureFilter::bilinear, raster::TextureFilter::trilinear}) {
+        for (const float u : {-1.5F, 0.0F, 0.3F, 1.0F, 7.25F}) {
+            const raster::LinearRgb c = texture.sample({u, 1.0F - u}, {{0.1F, 0.0F}, {0.0F, 0.3F}}, {filter, raster::TextureWrap::repeat});
+            if (!std::isfinite(c.r) || !std::isfinite(c.g) || !std::isfinite(c.b)) std::abort();
+        }
+    }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    if (size == 0) return 0;
+    const std::span<const std::uint8_t> rest(data + 1, size - 1);
+    try {
+        if (data[0] % 2 == 0) {
+            const raster::Texture texture = raster::decode_texture(rest, kMaxTexels);
+            sample_everywhere(texture);
+            return 0;
+        }
+        // OBJ text, then the MTL text after the first NUL byte.
+        const std::string_view text(reinterpret_cast<const char*>(rest.data()), rest.size());
+        const std::size_t split = text.find('\0');
+        const std::string_view obj = text.substr(0, split);
+        const std::string_view mtl = split == std::string_view::npos ? std::string_view() : text.substr(split + 1);
+        const auto model = std::make_shared<const raster::Model>(raster::parse_obj(obj, mtl));
+        draw(model, data[0] % 4 == 1 ? raster::ShadingMethod::phong : raster::ShadingMethod::unlit);
+    } catch (const std::runtime_error&) {
+        // The one way bad input may end: a clear error.
+    }
+    return 0;
+}

@@ -1,0 +1,92 @@
+#include "model_builder.hpp"
+
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <numbers>
+#include <tuple>
+#include <glm/geometric.hpp>
+
+namespace raster::detail {
+
+namespace {
+
+// Twice the area times the outward unit normal, as (b - a) x (c - b) is in raster's world.
+glm::vec3 area_normal(const PolygonSoup& soup, const SoupTriangle& triangle) {
+    const glm::dvec3 a = soup.positions[static_cast<std::size_t>(triangle.corners[0].position)];
+    const glm::dvec3 b = soup.positions[static_cast<std::size_t>(triangle.corners[1].position)];
+    const glm::dvec3 c = soup.positions[static_cast<std::size_t>(triangle.corners[2].position)];
+    return glm::vec3(glm::cross(b - a, c - b));
+}
+
+// A vertex of the output: one position with one normal and one texture coordinate.
+using VertexKey = std::tuple<std::int64_t, std::uint32_t, std::uint32_t, std::uint32_t, std::int64_t>;
+
+std::uint32_t bits_of(float value) {
+    std::uint32_t bits = 0;
+    std::memcpy(&bits, &value, sizeof bits);
+    return bits;
+}
+
+}  // namespace
+
+std::vector<std::pair<int, Mesh>> meshes_by_material(const PolygonSoup& soup, double crease_degrees) {
+    // Facet normals, and the facets around each position, for the normals the file lacks.
+    std::vector<glm::vec3> weighted(soup.triangles.size()), unit(soup.triangles.size());
+    std::vector<std::vector<std::uint32_t>> around(soup.positions.size());
+    for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
+        weighted[t] = area_normal(soup, soup.triangles[t]);
+        unit[t] = unit_or_zero(weighted[t]);
+        if (unit[t] == glm::vec3(0.0F)) continue;
+        for (const SoupCorner& corner : soup.triangles[t].corners) {
+            around[static_cast<std::size_t>(corner.position)].push_back(static_cast<std::uint32_t>(t));
+        }
+    }
+    const auto cos_crease = static_cast<float>(std::cos(crease_degrees * std::numbers::pi / 180.0));
+    const auto generated_normal = [&](std::size_t t, std::int64_t position) {
+        if (crease_degrees <= 0.0) return unit[t];
+        glm::vec3 sum(0.0F);
+        for (const std::uint32_t other : around[static_cast<std::size_t>(position)]) {
+            if (glm::dot(unit[other], unit[t]) >= cos_crease) sum += unit_or_zero(weighted[other]) * glm::length(weighted[other]);
+        }
+        const glm::vec3 mean = unit_or_zero(sum);
+        return mean == glm::vec3(0.0F) ? unit[t] : mean;
+    };
+
+    std::map<int, Mesh> meshes;
+    std::map<int, std::map<VertexKey, std::uint32_t>> vertices;
+    std::map<int, bool> textured;
+    for (const SoupTriangle& triangle : soup.triangles) {
+        if (triangle.corners[0].uv != kNoIndex || triangle.corners[1].uv != kNoIndex || triangle.corners[2].uv != kNoIndex) {
+            textured[triangle.material] = true;
+        }
+    }
+    for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
+        if (unit[t] == glm::vec3(0.0F)) continue;  // no area: it could never cover a pixel
+        const SoupTriangle& triangle = soup.triangles[t];
+        Mesh& mesh = meshes[triangle.material];
+        auto& index_of = vertices[triangle.material];
+        const bool with_uvs = textured[triangle.material];
+        Facet facet{{}, unit[t]};
+        for (std::size_t k = 0; k < 3; ++k) {
+            const SoupCorner& corner = triangle.corners[k];
+            glm::vec3 normal(0.0F);  // the file's, unless it has none or a zero or broken one
+            if (corner.normal != kNoIndex) normal = unit_or_zero(soup.normals[static_cast<std::size_t>(corner.normal)]);
+            if (normal == glm::vec3(0.0F)) normal = generated_normal(t, corner.position);
+            const VertexKey key{corner.position, bits_of(normal.x), bits_of(normal.y), bits_of(normal.z), corner.uv};
+            const auto [at, added] = index_of.try_emplace(key, static_cast<std::uint32_t>(mesh.positions.size()));
+            if (added) {
+                mesh.positions.push_back(soup.positions[static_cast<std::size_t>(corner.position)]);
+                mesh.normals.push_back(normal);
+                if (with_uvs) mesh.uvs.push_back(corner.uv != kNoIndex ? soup.uvs[static_cast<std::size_t>(corner.uv)] : glm::vec2(0.0F));
+            }
+            facet.corners[k] = at->second;
+        }
+        mesh.facets.push_back(facet);
+    }
+    std::vector<std::pair<int, Mesh>> result;
+    for (auto& [material, mesh] : meshes) result.emplace_back(material, std::move(mesh));
+    return result;
+}
+
+}  // namespace raster::detail

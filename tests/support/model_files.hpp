@@ -1,0 +1,31 @@
+#pragma once
+
+#include <raster/framebuffer.hpp>
+
+#include <filesystem>
+#include <string>
+
+// Image and model files the tests write themselves, byte by byte, so that no test depends on a
+// file it did not make.
+namespace test_support {
+
+// 24-bit uncompressed BMP, bottom-up rows as the format stores them.
+void write_bmp(const std::filesystem::path& path, const raster::Framebuffer& image);
+// Uncompressed true-colour TGA with its origin at the top left.
+void write_tga(const std::filesystem::path& path, const raster::Framebuffer& image);
+// RGB PNG whose pixels sit in stored (uncompressed) deflate blocks.
+void write_png(const std::filesystem::path& path, const raster::Framebuffer& image);
+
+// A checkerboard of `squares` x `squares` squares of `texels` texels each, in two colours.
+raster::Framebuffer checkerboard(int squares, int texels, raster::Rgb a, raster::Rgb b);
+
+// A unit cube (corners at +-1) whose six faces each map the whole texture, counter-clockwise
+// from outside as OBJ files have them, with `mtllib` and `usemtl` lines when given.
+std::string textured_cube_obj(const std::string& mtllib, const std::string& material);
+
+// Writes crate.obj, crate.mtl and checker.png into `folder`: a checkered cube (material
+// "crate", its map a 4 x 4 checkerboard of 8-texel squares) standing on a plain floor
+// (material "floor", Kd only); returns the OBJ's path.
+std::filesystem::path write_crate_on_floor(const std::filesystem::path& folder);
+
+}  // namespace test_support
