@@ -17,11 +17,9 @@ std::size_t triangle_count(const Model& model) noexcept {
     return count;
 }
 
-double Bounds::radius() const noexcept { return glm::length(high - low) * 0.5; }
-
 Bounds bounds_of(const Model& model) {
     constexpr double kHuge = std::numeric_limits<double>::max();
-    Bounds bounds{glm::dvec3(kHuge), glm::dvec3(-kHuge)};
+    Bounds bounds{glm::dvec3(kHuge), glm::dvec3(-kHuge), 0.0};
     bool any = false;
     for (const ModelPart& part : model.parts) {
         for (const Facet& facet : part.mesh.facets) {
@@ -34,6 +32,14 @@ Bounds bounds_of(const Model& model) {
         }
     }
     if (!any) throw std::invalid_argument("model has no facets");
+    const glm::dvec3 centre = bounds.centre();
+    for (const ModelPart& part : model.parts) {
+        for (const Facet& facet : part.mesh.facets) {
+            for (const std::uint32_t corner : facet.corners) {
+                bounds.radius = std::max(bounds.radius, glm::length(glm::dvec3(part.mesh.positions[corner]) - centre));
+            }
+        }
+    }
     return bounds;
 }
 

@@ -40,7 +40,7 @@ ModelStage::ModelStage(std::shared_ptr<const Model> model, const ModelView& view
     : model_(std::move(model)), shading_(view.shading) {
     if (!model_) throw std::invalid_argument("no model to stage");
     const Bounds bounds = bounds_of(*model_);
-    const double radius = bounds.radius();
+    const double radius = bounds.radius;
     const glm::dvec3 centre = bounds.centre();
     if (!(radius > 0.0) || !(radius < kLargestRadius) || !finite(centre)) {
         throw std::invalid_argument("the model is too large (or too flat) to frame: bounding radius " + std::to_string(radius));

@@ -32,13 +32,13 @@ struct Model {
 
 [[nodiscard]] std::size_t triangle_count(const Model& model) noexcept;
 
-// The smallest axis-aligned box around every vertex the facets use, and a sphere around it.
+// The smallest axis-aligned box around every vertex the facets use, and the smallest sphere
+// about the box's centre that holds them all.
 struct Bounds {
     glm::dvec3 low;
     glm::dvec3 high;
+    double radius;
     [[nodiscard]] glm::dvec3 centre() const noexcept { return (low + high) * 0.5; }
-    // Half the box's diagonal: a sphere of this radius about the centre holds the model.
-    [[nodiscard]] double radius() const noexcept;
 };
 // Throws std::invalid_argument for a model with no facets.
 [[nodiscard]] Bounds bounds_of(const Model& model);
