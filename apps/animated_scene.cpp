@@ -2,14 +2,15 @@
 #include "scene_option.hpp"
 
 int main(int argc, char** argv) {
-    CLI::App app("Renders the animation of one diary scene (0.0.8 to 0.1.7) to a lossless animated "
-                 "WebP that loops forever.",
+    CLI::App app("Renders the animation of one diary scene (0.0.8 to 0.1.7), or of the Ptah and "
+                 "raster-engine seeds, to a lossless animated WebP that loops forever.",
                  "animated-scene");
     app.footer(scene_list() +
                "\nExamples:\n"
                "  animated-scene                           # two tumbling tori, 360 frames, 7.2 s\n"
                "  animated-scene --scene orbit --effort fast orbit.webp\n"
-               "  animated-scene --scene point-light --perspective 60 lamp.webp");
+               "  animated-scene --scene point-light --perspective 60 lamp.webp\n"
+               "  animated-scene --scene flythrough --width 640 --height 360 fly.webp");
     ExportOptions options{"animated-scene.webp"};
     add_export_options(app, options);
     std::string name;
@@ -25,6 +26,15 @@ int main(int argc, char** argv) {
     add_perspective_option(app, fov);
 
     return run_exporter(app, options, argc, argv, [&] {
+        check_seed_options(name, automatic, fov);
+        if (raster::is_seed_scene(name)) {
+            const raster::SeedScene seed(name);
+            const int count = frames > 0 ? frames : seed.info().frames;
+            raster::DepthBuffer depth;
+            return export_animation(app, options, count, fps, [&](raster::Framebuffer& frame, int index) {
+                raster::render(frame, seed.frame(frame.width(), frame.height(), index, count), depth);
+            });
+        }
         const raster::DiaryScene scene(name);
         const int count = frames > 0 ? frames : scene.info().frames;
         const raster::DetailPlan plan = automatic ? plan_for(scene, options.width, options.height, count) : raster::DetailPlan{};

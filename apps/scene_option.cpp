@@ -2,13 +2,15 @@
 
 #include "exporter.hpp"
 
+#include <stdexcept>
 #include <vector>
 
 void add_scene_option(CLI::App& app, std::string& scene) {
     std::vector<std::string> names;
     for (const raster::SceneInfo& info : raster::diary_scenes()) names.emplace_back(info.name);
     scene = names.back();
-    app.add_option("--scene", scene, "Which scene of the diary to render (listed below)")
+    for (const raster::SeedSceneInfo& info : raster::seed_scenes()) names.emplace_back(info.name);
+    app.add_option("--scene", scene, "Which scene of the diary or of the other seeds to render (listed below)")
         ->transform(one_of(names))
         ->option_text("NAME [" + scene + "]");
 }
@@ -21,6 +23,12 @@ std::string scene_list() {
         name.resize(16, ' ');
         release.resize(8, ' ');
         list += "  " + name + release + std::string(info.title) + "\n";
+    }
+    list += "The other seeds' scenes, in their own perspective cameras:\n";
+    for (const raster::SeedSceneInfo& info : raster::seed_scenes()) {
+        std::string name(info.name);
+        name.resize(16, ' ');
+        list += "  " + name + std::string(info.source) + ": " + std::string(info.title) + "\n";
     }
     return list;
 }
@@ -52,6 +60,12 @@ std::string describe(const raster::DetailPlan& plan) {
                 kMethods[static_cast<int>(choice->shading)];
     }
     return text;
+}
+
+void check_seed_options(const std::string& scene, bool automatic, int fov_degrees) {
+    if (!raster::is_seed_scene(scene)) return;
+    if (automatic) throw std::invalid_argument("--detail auto plans the diary's spheres and tori; " + scene + " has none");
+    if (fov_degrees != 0) throw std::invalid_argument("--perspective applies to the diary's scenes; " + scene + " has its own camera");
 }
 
 void add_perspective_option(CLI::App& app, int& fov_degrees) {

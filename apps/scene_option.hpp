@@ -2,11 +2,13 @@
 
 #include <raster/auto_detail.hpp>
 #include <raster/diary_scenes.hpp>
+#include <raster/seed_scenes.hpp>
 
 #include <CLI/CLI.hpp>
 #include <string>
 
-// --scene NAME, any of the diary's scenes, the latest by default; the help lists them all.
+// --scene NAME, any of the diary's scenes (the latest by default) or the other seeds'; the help
+// lists them all.
 void add_scene_option(CLI::App& app, std::string& scene);
 // The scene list for a footer: one line each, "  torus           0.0.17  a Phong-shaded torus ...".
 std::string scene_list();
@@ -18,6 +20,10 @@ void add_detail_option(CLI::App& app, bool& automatic);
 raster::DetailPlan plan_for(const raster::DiaryScene& scene, int width, int height, int frames);
 // ", detail torus level 6 (Phong)" for the report line; empty when nothing was chosen.
 std::string describe(const raster::DetailPlan& plan);
+
+// The seeds' scenes have their own meshes and cameras: --detail auto and --perspective are
+// errors with them (std::invalid_argument).
+void check_seed_options(const std::string& scene, bool automatic, int fov_degrees);
 
 // --perspective DEGREES: 0 keeps the diary's orthographic camera; 1..179 looks through a pinhole
 // of that vertical field of view, the eye moved back so the scene keeps its framing.

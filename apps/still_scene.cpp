@@ -2,12 +2,13 @@
 #include "scene_option.hpp"
 
 int main(int argc, char** argv) {
-    CLI::App app("Renders the still of one diary scene (0.0.8 to 0.1.7) to a lossless WebP.", "still-scene");
+    CLI::App app("Renders the still of one diary scene (0.0.8 to 0.1.7), or of the Ptah and raster-engine seeds, to a lossless WebP.", "still-scene");
     app.footer(scene_list() +
                "\nExamples:\n"
                "  still-scene                              # shaders -> still-scene.webp\n"
                "  still-scene --scene two-spheres spheres.webp\n"
                "  still-scene --scene point-light --perspective 50 lamp.webp\n"
+               "  still-scene --scene ptah ptah.webp\n"
                "  still-scene --scene materials --detail auto --width 1280 --height 720 m.webp");
     ExportOptions options{"still-scene.webp"};
     add_export_options(app, options);
@@ -19,6 +20,14 @@ int main(int argc, char** argv) {
     add_perspective_option(app, fov);
 
     return run_exporter(app, options, argc, argv, [&] {
+        check_seed_options(name, automatic, fov);
+        if (raster::is_seed_scene(name)) {
+            const raster::SeedScene seed(name);
+            return export_still(app, options, [&](raster::Framebuffer& frame) {
+                raster::DepthBuffer depth;
+                raster::render(frame, seed.still(frame.width(), frame.height()), depth);
+            });
+        }
         const raster::DiaryScene scene(name);
         const raster::DetailPlan plan = automatic ? plan_for(scene, options.width, options.height, 0) : raster::DetailPlan{};
         return export_still(app, options, [&](raster::Framebuffer& frame) {

@@ -31,7 +31,8 @@ namespace {
 // `eye` is the viewer's position in perspective; orthographic views have `to_eye` alone.
 template <typename Draw>
 std::size_t draw_shaded(const SceneObject& object, std::span<const DirectionalLight> lights,
-                        std::span<const PointLight> points, glm::vec3 to_eye, std::optional<glm::vec3> eye, Draw draw) {
+                        std::span<const PointLight> points, glm::vec3 to_eye, std::optional<glm::vec3> eye,
+                        std::optional<DepthDarkening> darkening, Draw draw) {
     if (const auto* phase1 = std::get_if<Material>(&object.material)) {
         // Phase 1's model has one viewer direction, the camera's, even in perspective.
         const Lighting lighting(*phase1, lights, to_eye);
@@ -44,7 +45,7 @@ std::size_t draw_shaded(const SceneObject& object, std::span<const DirectionalLi
         return 0;
     }
     const PhongMaterial& material = std::get<PhongMaterial>(object.material);
-    const LinearLighting lighting(material, lights, points, to_eye, eye);
+    const LinearLighting lighting(material, lights, points, to_eye, eye, darkening);
     const DiffuseSource diffuse{material.diffuse, object.texture.get(), object.sampler};
     if (object.shading == ShadingMethod::unlit) return draw(UnlitShader{diffuse});
     if (object.texture) {  // the textured shaders read the texture at every pixel
@@ -75,7 +76,7 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
     for (const SceneObject& object : scene.objects) {
         if (!object.mesh) continue;  // an object without a mesh shows nothing
         const Mesh mesh = posed(*object.mesh, object.model);
-        drawn += draw_shaded(object, scene.lights, scene.point_lights, to_eye, eye,
+        drawn += draw_shaded(object, scene.lights, scene.point_lights, to_eye, eye, scene.darkening,
                              [&](const auto& shader) { return draw_mesh_with(tested, mesh, shader); });
     }
     return drawn;
@@ -111,7 +112,7 @@ PerspectiveScene in_perspective(const Scene& scene, int width, int height, doubl
     const OrthoCamera moved = flat.dollied(to_origin - distance);
     if (!std::isfinite(glm::length(glm::dvec3(moved.eye())))) throw std::invalid_argument("camera eye is too far out to move back");
     const PerspectiveCamera camera = PerspectiveCamera::from_view(moved, width, height, lens);
-    return {camera, scene.background, scene.lights, scene.point_lights, scene.objects};
+    return {camera, scene.background, scene.lights, scene.point_lights, scene.objects, scene.darkening};
 }
 
 }  // namespace raster

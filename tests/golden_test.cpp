@@ -3,6 +3,7 @@
 #include <raster/webp.hpp>
 
 #include <raster/model_scene.hpp>
+#include <raster/seed_scenes.hpp>
 #include <raster/obj_file.hpp>
 
 #include "support/golden.hpp"
@@ -179,5 +180,23 @@ TEST(Golden, ModelsThroughEachShadingAndView) {
         raster::DepthBuffer depth;
         raster::ModelStage(model, c.view, image.width(), image.height()).render(image, depth, c.turn);
         EXPECT_TRUE(matches_snapshot(image, "models/crate-" + c.name));
+    }
+}
+
+// The Ptah and raster-engine scenes: stills, and the flight every hundredth frame.
+TEST(Golden, SeedScenes) {
+    for (const raster::SeedSceneInfo& info : raster::seed_scenes()) {
+        Framebuffer image(320, 240);
+        raster::DepthBuffer depth;
+        const raster::SeedScene scene(info.name);
+        raster::render(image, scene.still(image.width(), image.height()), depth);
+        EXPECT_TRUE(matches_snapshot(image, "seeds/" + std::string(info.name)));
+    }
+    const raster::SeedScene fly("flythrough");
+    for (const int i : {100, 200, 300}) {
+        Framebuffer image(160, 120);
+        raster::DepthBuffer depth;
+        raster::render(image, fly.frame(image.width(), image.height(), i, fly.info().frames), depth);
+        EXPECT_TRUE(matches_snapshot(image, "seeds/flythrough-" + std::to_string(i)));
     }
 }

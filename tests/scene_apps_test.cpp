@@ -1,6 +1,7 @@
 // still-scene and animated-scene as a user runs them.
 #include <raster/diary_scenes.hpp>
 #include <raster/scenes.hpp>
+#include <raster/seed_scenes.hpp>
 #include <raster/webp.hpp>
 
 #include "support/scratch.hpp"
@@ -112,4 +113,34 @@ TEST(CubeApps, LitStyleIsTheDiarysLitCube) {
     raster::render_still_cube(expected, raster::CubeStyle::lit);
     EXPECT_EQ(raster::read_webp(dir / "lit.webp").frames.at(0).image, expected);
     EXPECT_EQ(expected, still_of("lit-cube", 100, 80));
+}
+
+TEST(StillSceneApp, TheSeedScenesRenderInTheirOwnCamerasAndRefuseDiaryOptions) {
+    const ScratchDir dir;
+    const auto result = run(kStillScene, {"--scene", "ptah", "--width", "160", "--height", "120", "p.webp"}, dir.path());
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    Framebuffer expected(160, 120);
+    raster::DepthBuffer depth;
+    raster::render(expected, raster::SeedScene("ptah").still(160, 120), depth);
+    EXPECT_EQ(raster::read_webp(dir / "p.webp").frames.at(0).image, expected);
+    const auto perspective = run(kStillScene, {"--scene", "ptah", "--perspective", "40", "q.webp"}, dir.path());
+    EXPECT_EQ(perspective.exit_code, 1);
+    EXPECT_EQ(perspective.err, "still-scene: --perspective applies to the diary's scenes; ptah has its own camera\n");
+    const auto detail = run(kAnimatedScene, {"--scene", "flythrough", "--detail", "auto", "r.webp"}, dir.path());
+    EXPECT_EQ(detail.exit_code, 1);
+    const auto help = run(kStillScene, {"--help"}, dir.path());
+    EXPECT_NE(help.out.find("flythrough      raster-engine: "), std::string::npos) << help.out;
+}
+
+TEST(AnimatedSceneApp, TheFlightIsAnAnimationOfItsOwnFrames) {
+    const ScratchDir dir;
+    const auto result = run(kAnimatedScene, {"--scene", "flythrough", "--frames", "4", "--width", "64", "--height", "48", "--effort", "fast", "f.webp"},
+                            dir.path());
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    const raster::DecodedWebp clip = raster::read_webp(dir / "f.webp");
+    ASSERT_EQ(clip.frames.size(), 4U);
+    Framebuffer expected(64, 48);
+    raster::DepthBuffer depth;
+    raster::render(expected, raster::SeedScene("flythrough").frame(64, 48, 2, 4), depth);
+    EXPECT_EQ(clip.frames[2].image, expected);
 }

@@ -44,6 +44,19 @@ struct PhongMaterial {
     [[nodiscard]] static PhongMaterial from_srgb(Rgb emissive, Rgb diffuse, Rgb specular, std::optional<float> shininess);
 };
 
+// raster-engine's Doom-like darkening: light received falls off linearly with view depth, from
+// full at `start` to `floor` at `end` and beyond (emitted light is not darkened).
+struct DepthDarkening {
+    float start = 0.0F;
+    float end = 1.0F;
+    float floor = 0.0F;
+    [[nodiscard]] float factor(float depth) const noexcept {
+        if (!(depth > start)) return 1.0F;
+        if (!(depth < end)) return floor;
+        return 1.0F - (1.0F - floor) * (depth - start) / (end - start);
+    }
+};
+
 // A point on a surface in world space: what a per-pixel shader needs for point lights.
 struct SurfacePoint {
     glm::vec3 position;
@@ -71,9 +84,11 @@ class LinearLighting {
 public:
     // `to_eye` is the unit vector toward the viewer of an orthographic view, one for the whole
     // image; with an `eye_position` (a perspective view) it is taken toward the eye at each point.
+    // With an eye position, `darkening` dims the light a point receives by its view depth.
     LinearLighting(const PhongMaterial& material, std::span<const DirectionalLight> directional,
                    std::span<const PointLight> points, glm::vec3 to_eye,
-                   std::optional<glm::vec3> eye_position = std::nullopt);
+                   std::optional<glm::vec3> eye_position = std::nullopt,
+                   std::optional<DepthDarkening> darkening = std::nullopt);
 
     [[nodiscard]] const PhongMaterial& material() const noexcept { return material_; }
 
@@ -113,6 +128,10 @@ public:
             if (power_.enabled()) {
                 specular += arriving * power_(std::max(0.0F, glm::dot(normal, unit_or_zero(toward.unit + to_eye))));
             }
+        }
+        if (darkening_ && eye_) {
+            const float dimmed = darkening_->factor(glm::dot(position - *eye_, -to_eye_));
+            return {diffuse * dimmed, specular * dimmed};
         }
         return {diffuse, specular};
     }
@@ -156,6 +175,7 @@ private:
     glm::vec3 to_eye_;
     std::optional<glm::vec3> eye_;
     SpecularPower power_;
+    std::optional<DepthDarkening> darkening_;
 };
 
 }  // namespace raster

@@ -50,6 +50,8 @@ struct BasicScene {
     // Point lights light Phase 2 materials only; the Phase 1 model knew directional light alone.
     std::vector<PointLight> point_lights;
     std::vector<SceneObject> objects;
+    // Light dimmed with view depth (Phase 2 materials in perspective only), as raster-engine does.
+    std::optional<DepthDarkening> darkening{};
 };
 using Scene = BasicScene<OrthoCamera>;
 using PerspectiveScene = BasicScene<PerspectiveCamera>;
