@@ -15,7 +15,7 @@ int main(int argc, char** argv) {
     int frames = raster::kAnimationFrameCount;
     add_integer_option(app, "--frames", frames, 1, 10000, "Frames in one full tumble, 1..10000");
     int fps = 1000 / raster::kFrameSpacingMs;
-    add_fps_option(app, fps);
+    add_animation_options(app, fps, options);
 
     return run_exporter(app, options, argc, argv, [&] {
         return export_animation(app, options, frames, fps, [&](raster::Framebuffer& frame, int index) {

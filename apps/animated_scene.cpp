@@ -19,7 +19,7 @@ int main(int argc, char** argv) {
     add_integer_option(app, "--frames", frames, 0, 10000,
                        "Frames in the whole clip, 1..10000; 0 (the default) takes the scene's own count");
     int fps = 1000 / raster::kFrameSpacingMs;
-    add_fps_option(app, fps);
+    add_animation_options(app, fps, options);
     bool automatic = false;
     add_detail_option(app, automatic);
     int fov = 0;
@@ -32,7 +32,7 @@ int main(int argc, char** argv) {
             const int count = frames > 0 ? frames : seed.info().frames;
             raster::DepthBuffer depth;
             return export_animation(app, options, count, fps, [&](raster::Framebuffer& frame, int index) {
-                raster::render(frame, seed.frame(frame.width(), frame.height(), index, count), depth);
+                raster::render(frame, seed.frame(frame.width(), frame.height(), index, count), depth, options.render_options());
             });
         }
         const raster::DiaryScene scene(name);
@@ -40,7 +40,8 @@ int main(int argc, char** argv) {
         const raster::DetailPlan plan = automatic ? plan_for(scene, options.width, options.height, count) : raster::DetailPlan{};
         raster::DepthBuffer depth;
         return export_animation(app, options, count, fps, [&](raster::Framebuffer& frame, int index) {
-            render_scene(frame, raster::with_detail(scene.frame(frame.width(), frame.height(), index, count), plan), fov, depth);
+            render_scene(frame, raster::with_detail(scene.frame(frame.width(), frame.height(), index, count), plan), fov, depth,
+                         options.render_options());
         }) + describe(plan);
     });
 }

@@ -128,6 +128,9 @@ void add_export_options(CLI::App& app, ExportOptions& options) {
     const std::string side = "in pixels, 1.." + std::to_string(raster::kMaxImageSide) + " (the WebP limit)";
     add_integer_option(app, "--width", options.width, 1, raster::kMaxImageSide, "Image width " + side);
     add_integer_option(app, "--height", options.height, 1, raster::kMaxImageSide, "Image height " + side);
+    add_integer_option(app, "--threads", options.threads, 0, 256,
+                       "Threads for rendering (each a band of rows) and for encoding animation frames, 0..256; 0 (the "
+                       "default) takes one per core. The picture is the same whatever the count");
     add_output_options(app, options);
 }
 
@@ -258,20 +261,25 @@ std::string export_still(const CLI::App& app, const ExportOptions& options,
            std::to_string(options.height) + " still, " + std::to_string(bytes.size()) + " bytes";
 }
 
-void add_fps_option(CLI::App& app, int& fps) {
+void add_animation_options(CLI::App& app, int& fps, ExportOptions& options) {
     // Browsers play frames of 10 ms or less at 100 ms, so the fastest honest rate gives 11 ms.
     constexpr int kMaxFps = 95;
     add_integer_option(app, "--fps", fps, 1, kMaxFps,
                        "Playback rate, 1..95. WebP stores whole milliseconds, so a frame lasts "
                        "round(1000 / fps) ms; browsers play frames of 10 ms or less at 100 ms, "
                        "so faster rates would play slower");
+    add_choice_option<raster::AnimationPath>(
+        app, "--encoder", options.encoder, {{"parallel", raster::AnimationPath::parallel}, {"anim", raster::AnimationPath::anim}},
+        "parallel: each frame's changed rectangle encoded on every core while later frames render; anim: libwebp's "
+        "own animation encoder, on one thread (doc/performance.md compares them)",
+        "parallel");
 }
 
 std::string export_animation(const CLI::App& app, const ExportOptions& options, int frames, int fps,
                              const std::function<void(raster::Framebuffer&, int)>& render) {
     check_output(app, options);
     const int spacing_ms = (1000 + fps / 2) / fps;
-    raster::AnimationEncoder encoder(options.width, options.height, spacing_ms, options.effort);
+    raster::AnimationEncoder encoder(options.width, options.height, spacing_ms, {options.effort, options.encoder, options.threads});
     raster::Framebuffer frame(options.width, options.height);
     Progress progress(app.get_name(), options);
     for (int i = 0; i < frames; ++i) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <raster/output_file.hpp>
+#include <raster/scene.hpp>
 #include <raster/scenes.hpp>
 #include <raster/webp.hpp>
 
@@ -24,6 +25,10 @@ struct ExportOptions {
     bool quiet = false;
     bool progress = false;
     raster::OutputPolicy policy;
+    raster::AnimationPath encoder = raster::AnimationPath::parallel;
+    int threads = 0;  // for rendering bands and encoding frames; 0: one per core
+
+    [[nodiscard]] raster::RenderOptions render_options() const { return {threads}; }
 };
 
 // A CLI11 app whose help is wrapped to 80 columns and whose --version names the program.
@@ -96,8 +101,8 @@ int run_exporter(CLI::App& app, const ExportOptions& options, int argc, char** a
 // "Wrote out.webp: 800x600 still, 4211 bytes".
 std::string export_still(const CLI::App& app, const ExportOptions& options,
                          const std::function<void(raster::Framebuffer&)>& render);
-// --fps 1..95, with the browsers' 10 ms rule in its help.
-void add_fps_option(CLI::App& app, int& fps);
+// --fps 1..95, with the browsers' 10 ms rule in its help, and --encoder parallel|anim.
+void add_animation_options(CLI::App& app, int& fps, ExportOptions& options);
 // Renders `frames` frames at `fps` into a looping animation, writes it and returns the line to
 // report: "Wrote out.webp: 800x600, 360 frames, 7200 ms, 205874 bytes".
 std::string export_animation(const CLI::App& app, const ExportOptions& options, int frames, int fps,

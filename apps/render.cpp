@@ -79,7 +79,7 @@ int main(int argc, char** argv) {
     add_integer_option(app, "--turntable", frames, 0, 10000,
                        "Write an animation of this many frames, 1..10000, turning the model once about --up");
     int fps = 30;
-    add_fps_option(app, fps);
+    add_animation_options(app, fps, options);
     add_choice_option<raster::ShadingMethod>(app, "--shading", view.shading,
                                              {{"flat", raster::ShadingMethod::flat},
                                               {"gouraud", raster::ShadingMethod::gouraud},
@@ -129,10 +129,10 @@ int main(int argc, char** argv) {
         raster::DepthBuffer depth;
         std::string report;
         if (frames == 0) {
-            report = export_still(app, options, [&](raster::Framebuffer& frame) { stage.render(frame, depth); });
+            report = export_still(app, options, [&](raster::Framebuffer& frame) { stage.render(frame, depth, 0.0, options.render_options()); });
         } else {
             report = export_animation(app, options, frames, fps, [&](raster::Framebuffer& frame, int index) {
-                stage.render(frame, depth, 2.0 * std::numbers::pi * index / frames);
+                stage.render(frame, depth, 2.0 * std::numbers::pi * index / frames, options.render_options());
             });
         }
         return report + ", " + std::to_string(triangles) + " triangles, " + seconds_since(start);

@@ -76,10 +76,11 @@ void add_perspective_option(CLI::App& app, int& fov_degrees) {
                        "close up)");
 }
 
-void render_scene(raster::Framebuffer& frame, const raster::Scene& scene, int fov_degrees, raster::DepthBuffer& depth) {
+void render_scene(raster::Framebuffer& frame, const raster::Scene& scene, int fov_degrees, raster::DepthBuffer& depth,
+                  raster::RenderOptions options) {
     if (fov_degrees == 0) {
-        raster::render(frame, scene, depth);
+        raster::render(frame, scene, depth, options);
     } else {
-        raster::render(frame, raster::in_perspective(scene, frame.width(), frame.height(), fov_degrees), depth);
+        raster::render(frame, raster::in_perspective(scene, frame.width(), frame.height(), fov_degrees), depth, options);
     }
 }

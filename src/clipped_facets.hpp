@@ -14,7 +14,8 @@ namespace raster::detail {
 // `band`: how far beyond the image's edges x and y are clipped, in pixels (the lab compares).
 template <typename Shader, Interpolation kMode = Interpolation::perspective>
 std::size_t draw_facets_in_perspective(Framebuffer& colour, DepthBuffer* depth_buffer, const PerspectiveCamera& camera,
-                                       const Mesh& mesh, const Shader& shader, double band = kGuardBandPixels) {
+                                       const Mesh& mesh, const Shader& shader, double band = kGuardBandPixels,
+                                       std::optional<PixelRect> rows = std::nullopt) {
     using Varying = typename Shader::Varying;
     check_drawable(colour, depth_buffer, mesh);
     if (camera.width() != colour.width() || camera.height() != colour.height()) {
@@ -39,10 +40,11 @@ std::size_t draw_facets_in_perspective(Framebuffer& colour, DepthBuffer* depth_b
             }
             const std::array<SubpixelPoint, 3> points{corners[0].at, corners[1].at, corners[2].at};
             if (!usable || twice_signed_area(points) <= 0) continue;  // facing away or edge-on
+            ++drawn;
+            if (misses_rows(points, rows)) continue;  // another band's
             const std::array<Varying, 3> values = facet_varyings(shader, mesh, facet, varyings);
             for (std::size_t k = 0; k < 3; ++k) corners[k].varying = values[k];
-            shade_triangle<Shader, FloatDepth, kMode>(colour, depth_buffer, corners, shader);
-            ++drawn;
+            shade_triangle<Shader, FloatDepth, kMode>(colour, depth_buffer, corners, shader, {}, rows);
             continue;
         }
         const std::array<Varying, 3> values = facet_varyings(shader, mesh, facet, varyings);
@@ -65,8 +67,9 @@ std::size_t draw_facets_in_perspective(Framebuffer& colour, DepthBuffer* depth_b
             const std::array<ShadedCorner<Varying>, 3> piece{corners[0], corners[k], corners[k + 1]};
             const std::array<SubpixelPoint, 3> points{piece[0].at, piece[1].at, piece[2].at};
             if (twice_signed_area(points) <= 0) continue;  // facing away or edge-on
-            shade_triangle<Shader, FloatDepth, kMode>(colour, depth_buffer, piece, shader);
             any = true;
+            if (misses_rows(points, rows)) continue;  // another band's
+            shade_triangle<Shader, FloatDepth, kMode>(colour, depth_buffer, piece, shader, {}, rows);
         }
         drawn += any ? 1 : 0;
     }

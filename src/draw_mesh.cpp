@@ -7,7 +7,7 @@ namespace {
 
 template <typename Shader>
 std::size_t draw(RenderTarget target, const OrthoCamera& camera, const Mesh& mesh, const Shader& shader) {
-    return detail::draw_facets(target.colour, target.depth, camera, mesh, shader);
+    return detail::draw_facets(target.colour, target.depth, camera, mesh, shader, {}, target.rows);
 }
 
 }  // namespace

@@ -11,13 +11,25 @@ namespace raster::detail {
 
 namespace {
 
-// Twice the area times the outward unit normal, as (b - a) x (c - b) is in raster's world.
-glm::vec3 area_normal(const PolygonSoup& soup, const SoupTriangle& triangle) {
+// Twice the area times the outward unit normal, as (b - a) x (c - b) is in raster's world; in
+// double, where neither huge nor tiny float coordinates overflow or vanish.
+glm::dvec3 area_normal(const PolygonSoup& soup, const SoupTriangle& triangle) {
     const glm::dvec3 a = soup.positions[static_cast<std::size_t>(triangle.corners[0].position)];
     const glm::dvec3 b = soup.positions[static_cast<std::size_t>(triangle.corners[1].position)];
     const glm::dvec3 c = soup.positions[static_cast<std::size_t>(triangle.corners[2].position)];
-    return glm::vec3(glm::cross(b - a, c - b));
+    return glm::cross(b - a, c - b);
 }
+
+// The unit vector along v in float, or zero when v has no length or is not finite.
+glm::vec3 unit_of(glm::dvec3 v) {
+    const double length = glm::length(v);
+    if (!(length > 0.0) || !std::isfinite(length)) return glm::vec3(0.0F);
+    return glm::vec3(v / length);
+}
+
+// Beyond this many facets around one position, its corners keep their facets' normals: the
+// smoothing compares every pair, and a fan of thousands would take quadratic time.
+constexpr std::size_t kMaxSmoothedNeighbours = 64;
 
 // A vertex of the output: one position with one normal and one texture coordinate.
 using VertexKey = std::tuple<std::int64_t, std::uint32_t, std::uint32_t, std::uint32_t, std::int64_t>;
@@ -32,11 +44,12 @@ std::uint32_t bits_of(float value) {
 
 std::vector<std::pair<int, Mesh>> meshes_by_material(const PolygonSoup& soup, double crease_degrees) {
     // Facet normals, and the facets around each position, for the normals the file lacks.
-    std::vector<glm::vec3> weighted(soup.triangles.size()), unit(soup.triangles.size());
+    std::vector<glm::dvec3> weighted(soup.triangles.size());
+    std::vector<glm::vec3> unit(soup.triangles.size());
     std::vector<std::vector<std::uint32_t>> around(soup.positions.size());
     for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
         weighted[t] = area_normal(soup, soup.triangles[t]);
-        unit[t] = unit_or_zero(weighted[t]);
+        unit[t] = unit_of(weighted[t]);
         if (unit[t] == glm::vec3(0.0F)) continue;
         for (const SoupCorner& corner : soup.triangles[t].corners) {
             around[static_cast<std::size_t>(corner.position)].push_back(static_cast<std::uint32_t>(t));
@@ -44,12 +57,14 @@ std::vector<std::pair<int, Mesh>> meshes_by_material(const PolygonSoup& soup, do
     }
     const auto cos_crease = static_cast<float>(std::cos(crease_degrees * std::numbers::pi / 180.0));
     const auto generated_normal = [&](std::size_t t, std::int64_t position) {
-        if (crease_degrees <= 0.0) return unit[t];
-        glm::vec3 sum(0.0F);
-        for (const std::uint32_t other : around[static_cast<std::size_t>(position)]) {
-            if (glm::dot(unit[other], unit[t]) >= cos_crease) sum += unit_or_zero(weighted[other]) * glm::length(weighted[other]);
+        const std::vector<std::uint32_t>& neighbours = around[static_cast<std::size_t>(position)];
+        if (crease_degrees <= 0.0 || neighbours.size() > kMaxSmoothedNeighbours) return unit[t];
+        glm::dvec3 sum(0.0);
+        for (const std::uint32_t other : neighbours) {
+            // Area-weighted; in double, which float coordinates cannot overflow.
+            if (glm::dot(unit[other], unit[t]) >= cos_crease) sum += glm::dvec3(unit[other]) * glm::length(weighted[other]);
         }
-        const glm::vec3 mean = unit_or_zero(sum);
+        const glm::vec3 mean = unit_of(sum);
         return mean == glm::vec3(0.0F) ? unit[t] : mean;
     };
 

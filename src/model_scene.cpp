@@ -85,9 +85,13 @@ ModelStage::ModelStage(std::shared_ptr<const Model> model, const ModelView& view
     lights.push_back({glm::vec3(glm::normalize(-glm::normalize(key) + 0.3 * -forward)), 0.3F});
 
     if (view.orthographic) {
+        if (view.near || view.far) throw std::invalid_argument("--near and --far set a perspective lens; an orthographic view draws the whole model");
         orthographic_ = Scene{OrthoCamera::look_at(width, height, glm::vec3(eye), glm::vec3(target_), glm::vec3(up_)), view.background, lights,
                        {}, {}};
         return;
+    }
+    if (view.near && view.far && !(*view.near < *view.far)) {
+        throw std::invalid_argument("--near must be less than --far, got " + std::to_string(*view.near) + " and " + std::to_string(*view.far));
     }
     // Near and far hold the sphere, wherever the turn about the target takes it.
     const double reach = 1.0 + 2.0 * glm::length(target_);
@@ -110,15 +114,15 @@ std::vector<SceneObject> ModelStage::objects(double turn) const {
     return objects;
 }
 
-std::size_t ModelStage::render(Framebuffer& frame, DepthBuffer& depth, double turn) const {
+std::size_t ModelStage::render(Framebuffer& frame, DepthBuffer& depth, double turn, RenderOptions options) const {
     if (orthographic_) {
         Scene scene = *orthographic_;
         scene.objects = objects(turn);
-        return raster::render(frame, scene, depth);
+        return raster::render(frame, scene, depth, options);
     }
     PerspectiveScene scene = *perspective_;
     scene.objects = objects(turn);
-    return raster::render(frame, scene, depth);
+    return raster::render(frame, scene, depth, options);
 }
 
 std::vector<std::string> replace_diffuse_maps(Model& model, const std::shared_ptr<const Texture>& texture, const std::string& texture_name) {

@@ -3,6 +3,8 @@
 
 #include "model_builder.hpp"
 
+#include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -71,11 +73,62 @@ private:
     std::vector<std::string> warnings_;
 };
 
-// Every line of tinyobjloader's message, each one a warning.
+// Every distinct line of tinyobjloader's message, each one a warning ("." alone is its stray
+// full stop after "Degenerated face found").
 void add_lines(std::vector<std::string>& warnings, const std::string& prefix, const std::string& text) {
     std::istringstream lines(text);
     for (std::string line; std::getline(lines, line);) {
-        if (!line.empty()) warnings.push_back(prefix + line);
+        if (line.empty() || line == ".") continue;
+        const std::string warning = prefix + line;
+        if (std::find(warnings.begin(), warnings.end(), warning) == warnings.end()) warnings.push_back(warning);
+    }
+}
+
+// One index of a face corner, OBJ's way: 1 is the first defined so far, -1 the last one.
+// Returns an error message, or "" when the index names something defined before the face.
+std::string check_index(std::string_view text, std::size_t defined, const char* what) {
+    long long value = 0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (error != std::errc() || end != text.data() + text.size()) return "'" + std::string(text) + "' is not a " + what + " index";
+    if (value == 0) return std::string(what) + " index 0: OBJ counts from 1";
+    const long long resolved = value > 0 ? value : static_cast<long long>(defined) + value + 1;
+    if (resolved < 1 || resolved > static_cast<long long>(defined)) {
+        return "face names " + std::string(what) + " " + std::to_string(value) + ", but " + std::to_string(defined) +
+               (defined == 1 ? " is" : " are") + " defined before it";
+    }
+    return "";
+}
+
+// Reads the OBJ once before tinyobjloader does, line by line, so that a face naming what the file
+// does not define is an error with its line (tinyobjloader would drop it with a warning), and a
+// face of more corners than kMaxFaceCorners is refused before its splitting takes quadratic time.
+void check_faces(std::istream& in, const std::string& name) {
+    std::size_t vertices = 0, uvs = 0, normals = 0, number = 0;
+    for (std::string line; std::getline(in, line);) {
+        ++number;
+        std::istringstream words(line);
+        std::string keyword;
+        if (!(words >> keyword)) continue;
+        if (keyword == "v") ++vertices;
+        if (keyword == "vt") ++uvs;
+        if (keyword == "vn") ++normals;
+        if (keyword != "f") continue;
+        std::size_t corners = 0;
+        for (std::string corner; words >> corner;) {
+            if (++corners > kMaxFaceCorners) {
+                throw std::runtime_error(name + ":" + std::to_string(number) + ": a face of more than " + std::to_string(kMaxFaceCorners) +
+                                         " corners");
+            }
+            const std::size_t slash = corner.find('/'), second = slash == std::string::npos ? slash : corner.find('/', slash + 1);
+            const std::string_view view(corner);
+            std::string problem = check_index(view.substr(0, slash), vertices, "vertex");
+            if (problem.empty() && slash != std::string::npos) {
+                const std::string_view uv = view.substr(slash + 1, second == std::string::npos ? std::string_view::npos : second - slash - 1);
+                if (!uv.empty()) problem = check_index(uv, uvs, "texture coordinate");
+                if (problem.empty() && second != std::string::npos) problem = check_index(view.substr(second + 1), normals, "normal");
+            }
+            if (!problem.empty()) throw std::runtime_error(name + ":" + std::to_string(number) + ": " + problem);
+        }
     }
 }
 
@@ -83,7 +136,7 @@ void add_lines(std::vector<std::string>& warnings, const std::string& prefix, co
 std::int64_t checked(int index, std::size_t count, const char* what, std::size_t face, bool optional) {
     if (index < 0 && optional) return detail::kNoIndex;
     if (index < 0 || static_cast<std::size_t>(index) >= count) {
-        throw BadModel("face " + std::to_string(face + 1) + " names " + what + " " + std::to_string(index + 1) + ", but the file has " +
+        throw BadModel("triangle " + std::to_string(face + 1) + " names " + what + " " + std::to_string(index + 1) + ", but the file has " +
                        std::to_string(count));
     }
     return index;
@@ -106,8 +159,8 @@ detail::PolygonSoup soup_from(const tinyobj::attrib_t& attrib, const std::vector
             const std::size_t count = shape.mesh.num_face_vertices[f];
             const std::size_t first = next;
             next += count;
-            if (next > shape.mesh.indices.size()) throw BadModel("face " + std::to_string(face + 1) + " is cut short");
-            if (count < 3) {
+            if (next > shape.mesh.indices.size()) throw BadModel("triangle " + std::to_string(face + 1) + " is cut short");
+            if (count < 3) {  // tinyobjloader drops these itself; kept as a guard
                 ++skipped;
                 continue;
             }
@@ -158,7 +211,8 @@ Model model_from(std::istream& obj, const std::string& name, MaterialLibraries& 
     std::size_t skipped = 0;
     const detail::PolygonSoup soup = soup_from(attrib, shapes, skipped);
     if (skipped > 0) model.warnings.push_back(name + ": skipped " + std::to_string(skipped) + " faces with fewer than 3 corners");
-    std::map<std::filesystem::path, std::shared_ptr<const Texture>> loaded;
+    std::map<std::filesystem::path, std::shared_ptr<const Texture>> loaded;  // by canonical path: each file read once
+    std::size_t texels = 0;
     bool translucent = false;
     for (auto& [id, mesh] : detail::meshes_by_material(soup, options.crease_degrees)) {
         ModelPart part{"", std::move(mesh), default_model_material()};
@@ -169,16 +223,22 @@ Model model_from(std::istream& obj, const std::string& name, MaterialLibraries& 
             translucent = translucent || m.dissolve < 1.0F;
             part.sampler.wrap = m.diffuse_texopt.clamp ? TextureWrap::clamp : TextureWrap::repeat;
             if (!m.diffuse_texname.empty() && load_maps) {
-                const std::filesystem::path map = libraries.directory_of(static_cast<std::size_t>(id)) / m.diffuse_texname;
+                const std::filesystem::path given = libraries.directory_of(static_cast<std::size_t>(id)) / m.diffuse_texname;
+                std::error_code error;
+                std::filesystem::path map = std::filesystem::weakly_canonical(given, error);
+                if (error) map = given;
                 if (part.mesh.uvs.empty()) {
                     model.warnings.push_back(name + ": material '" + m.name + "' has a map but its faces have no texture coordinates; drawing its colour");
                 } else if (const auto found = loaded.find(map); found != loaded.end()) {
                     part.texture = found->second;
                 } else {
                     try {
-                        part.texture = std::make_shared<const Texture>(read_texture(map, options.max_texels));
-                    } catch (const std::runtime_error& error) {
-                        model.warnings.push_back(std::string(error.what()) + "; drawing material '" + m.name + "' in its colour");
+                        const std::size_t left = kMaxModelTexels - texels;
+                        if (left == 0) throw std::runtime_error(given.string() + ": the model's textures already hold " + std::to_string(kMaxModelTexels) + " texels");
+                        part.texture = std::make_shared<const Texture>(read_texture(given, std::min(options.max_texels, left)));
+                        texels += static_cast<std::size_t>(part.texture->width()) * static_cast<std::size_t>(part.texture->height());
+                    } catch (const std::runtime_error& problem) {
+                        model.warnings.push_back(std::string(problem.what()) + "; drawing material '" + m.name + "' in its colour");
                     }
                     loaded.emplace(map, part.texture);
                 }
@@ -187,6 +247,12 @@ Model model_from(std::istream& obj, const std::string& name, MaterialLibraries& 
         model.parts.push_back(std::move(part));
     }
     if (translucent) model.warnings.push_back(name + ": transparency (d below 1) is not supported; drawing those materials opaque");
+    // One line per distinct warning, however often the file repeats its cause.
+    std::vector<std::string> distinct;
+    for (std::string& warning : model.warnings) {
+        if (std::find(distinct.begin(), distinct.end(), warning) == distinct.end()) distinct.push_back(std::move(warning));
+    }
+    model.warnings = std::move(distinct);
     if (model.parts.empty()) throw BadModel("no faces to draw");
     return model;
 }
@@ -196,6 +262,9 @@ Model model_from(std::istream& obj, const std::string& name, MaterialLibraries& 
 Model read_obj(const std::filesystem::path& path, const ObjOptions& options) {
     try {
         std::ifstream in = open_checked(path);
+        check_faces(in, path.string());
+        in.clear();
+        in.seekg(0);
         MaterialLibraries libraries(path.parent_path(), std::nullopt);
         return model_from(in, path.string(), libraries, options, options.load_textures);
     } catch (const BadModel& problem) {
@@ -206,6 +275,9 @@ Model read_obj(const std::filesystem::path& path, const ObjOptions& options) {
 Model parse_obj(std::string_view obj, std::string_view mtl, ObjOptions options) {
     try {
         std::istringstream in{std::string(obj)};
+        check_faces(in, "<memory>");
+        in.clear();
+        in.seekg(0);
         MaterialLibraries libraries(".", mtl);
         return model_from(in, "<memory>", libraries, options, false);
     } catch (const BadModel& problem) {

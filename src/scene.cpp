@@ -6,6 +6,9 @@
 #include "clipped_facets.hpp"
 
 #include <algorithm>
+#include <exception>
+#include <thread>
+#include <vector>
 #include <cmath>
 #include <numbers>
 #include <optional>
@@ -62,40 +65,80 @@ std::size_t draw_shaded(const SceneObject& object, std::span<const DirectionalLi
     }
 }
 
+// The threads a render uses: the count asked for (0: one per core), at most one per row.
+int thread_count(int asked, int height) {
+    if (asked < 0) throw std::invalid_argument("thread count must be 0 (one per core) or more, got " + std::to_string(asked));
+    const int cores = static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
+    return std::clamp(asked == 0 ? cores : asked, 1, height);
+}
+
 // Clears to the background, prepares depth only when the scene needs it, and draws every posed
-// object through `draw_mesh_with(depth or nullptr, mesh, shader)`.
+// object through `draw_mesh_with(depth or nullptr, rows, mesh, shader)`: on one thread, or on
+// several, each clearing and drawing its own band of rows in the same object and facet order.
 template <typename Camera, typename DrawMesh>
 std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& scene, DepthBuffer& depth,
-                           std::optional<glm::vec3> eye, DrawMesh draw_mesh_with) {
-    framebuffer.clear(scene.background);
+                           std::optional<glm::vec3> eye, RenderOptions options, DrawMesh draw_mesh_with) {
+    const int threads = thread_count(options.threads, framebuffer.height());
     const bool depth_test = needs_depth(scene);
     if (depth_test) depth.prepare(framebuffer.width(), framebuffer.height());
     DepthBuffer* const tested = depth_test ? &depth : nullptr;
     const glm::vec3 to_eye = -scene.camera.direction();
-    std::size_t drawn = 0;
-    for (const SceneObject& object : scene.objects) {
-        if (!object.mesh) continue;  // an object without a mesh shows nothing
-        const Mesh mesh = posed(*object.mesh, object.model);
-        drawn += draw_shaded(object, scene.lights, scene.point_lights, to_eye, eye, scene.darkening,
-                             [&](const auto& shader) { return draw_mesh_with(tested, mesh, shader); });
+    std::vector<Mesh> meshes;  // posed once, drawn by every band
+    for (const SceneObject& object : scene.objects) meshes.push_back(object.mesh ? posed(*object.mesh, object.model) : Mesh{});
+    const auto draw_band = [&](std::optional<PixelRect> rows) {
+        if (rows) {
+            for (int y = rows->y; y < rows->y + rows->height; ++y) framebuffer.fill_row(y, 0, framebuffer.width(), scene.background);
+        } else {
+            framebuffer.clear(scene.background);
+        }
+        std::size_t drawn = 0;
+        for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+            if (!scene.objects[i].mesh) continue;  // an object without a mesh shows nothing
+            drawn += draw_shaded(scene.objects[i], scene.lights, scene.point_lights, to_eye, eye, scene.darkening,
+                                 [&](const auto& shader) { return draw_mesh_with(tested, rows, meshes[i], shader); });
+        }
+        return drawn;
+    };
+    if (threads == 1) return draw_band(std::nullopt);
+    // Bands of whole rows, as even as the height allows; every band counts the same facets.
+    std::vector<std::size_t> drawn(static_cast<std::size_t>(threads));
+    std::vector<std::exception_ptr> failures(static_cast<std::size_t>(threads));
+    {
+        std::vector<std::jthread> workers;
+        for (int t = 0; t < threads; ++t) {
+            const int top = framebuffer.height() * t / threads, bottom = framebuffer.height() * (t + 1) / threads;
+            workers.emplace_back([&, t, top, bottom] {
+                try {
+                    drawn[static_cast<std::size_t>(t)] = draw_band(PixelRect{0, top, framebuffer.width(), bottom - top});
+                } catch (...) {
+                    failures[static_cast<std::size_t>(t)] = std::current_exception();
+                }
+            });
+        }
     }
-    return drawn;
+    for (const std::exception_ptr& failure : failures) {
+        if (failure) std::rethrow_exception(failure);
+    }
+    return drawn.front();
 }
 
 }  // namespace
 
-std::size_t render(Framebuffer& framebuffer, const Scene& scene, DepthBuffer& depth) {
+std::size_t render(Framebuffer& framebuffer, const Scene& scene, DepthBuffer& depth, RenderOptions options) {
     // Orthographic: the direction toward the viewer is the same at every pixel.
-    return render_objects(framebuffer, scene, depth, std::nullopt, [&](DepthBuffer* tested, const Mesh& mesh, const auto& shader) {
-        return draw_mesh({framebuffer, tested}, scene.camera, mesh, shader);
-    });
+    return render_objects(framebuffer, scene, depth, std::nullopt, options,
+                          [&](DepthBuffer* tested, std::optional<PixelRect> rows, const Mesh& mesh, const auto& shader) {
+                              return draw_mesh({framebuffer, tested, rows}, scene.camera, mesh, shader);
+                          });
 }
 
-std::size_t render(Framebuffer& framebuffer, const PerspectiveScene& scene, DepthBuffer& depth) {
+std::size_t render(Framebuffer& framebuffer, const PerspectiveScene& scene, DepthBuffer& depth, RenderOptions options) {
     // Phase 2 takes the direction toward the eye at every point.
-    return render_objects(framebuffer, scene, depth, scene.camera.eye(), [&](DepthBuffer* tested, const Mesh& mesh, const auto& shader) {
-        return detail::draw_facets_in_perspective(framebuffer, tested, scene.camera, mesh, shader);
-    });
+    return render_objects(framebuffer, scene, depth, scene.camera.eye(), options,
+                          [&](DepthBuffer* tested, std::optional<PixelRect> rows, const Mesh& mesh, const auto& shader) {
+                              return detail::draw_facets_in_perspective(framebuffer, tested, scene.camera, mesh, shader,
+                                                                        detail::kGuardBandPixels, rows);
+                          });
 }
 
 PerspectiveScene in_perspective(const Scene& scene, int width, int height, double fov_degrees) {

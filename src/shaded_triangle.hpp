@@ -8,6 +8,7 @@
 #include <raster/ortho_camera.hpp>
 #include <raster/shaders.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -71,10 +72,11 @@ enum class Interpolation { screen_linear, perspective };
 
 // Fills one triangle facing the camera. Varying needs +, - and * float; corner 0 anchors the
 // interpolation (v0 + w1 (v1 - v0) + w2 (v2 - v0)), so equal corners give that value exactly.
+// `rows`, when given, limits the writes to a band of rows: what one thread of a banded render owns.
 template <typename Shader, typename DepthFormat = FloatDepth, Interpolation kMode = Interpolation::screen_linear>
 void shade_triangle(Framebuffer& colour, DepthBuffer* depth,
                     const std::array<ShadedCorner<typename Shader::Varying>, 3>& corners, const Shader& shader,
-                    DepthFormat stored = {}) {
+                    DepthFormat stored = {}, std::optional<PixelRect> rows = std::nullopt) {
     using Varying = typename Shader::Varying;
     const std::array<SubpixelPoint, 3> points{corners[0].at, corners[1].at, corners[2].at};
     const std::int64_t twice_area = twice_signed_area(points);
@@ -92,12 +94,13 @@ void shade_triangle(Framebuffer& colour, DepthBuffer* depth,
     const auto z_step = static_cast<float>(z1 * w1.per_pixel_x() + z2 * w2.per_pixel_x());
     std::uint8_t* const pixels = colour.pixels();
     const std::size_t width = static_cast<std::size_t>(colour.width());
+    const PixelRect clip = rows.value_or(PixelRect{0, 0, colour.width(), colour.height()});
 
     if constexpr (kMode == Interpolation::perspective) {
         // Screen weights a, b of corners 1 and 2 become b_k / w_k over their sum: the weights
         // of the surface point seen there; the sum is 1 / w, so the view depth comes with them.
         const double inv0 = 1.0 / corners[0].depth, inv1 = 1.0 / corners[1].depth, inv2 = 1.0 / corners[2].depth;
-        rasterize_convex(points, {0, 0, colour.width(), colour.height()}, [&](Span span) {
+        rasterize_convex(points, clip, [&](Span span) {
             std::uint8_t* out = pixels + (static_cast<std::size_t>(span.y) * width + static_cast<std::size_t>(span.x_begin)) * 3;
             float* nearest = depth != nullptr ? depth->row(span.y) + span.x_begin : nullptr;
             for (int x = span.x_begin; x < span.x_end; ++x, out += 3) {
@@ -129,7 +132,7 @@ void shade_triangle(Framebuffer& colour, DepthBuffer* depth,
         });
         return;
     }
-    rasterize_convex(points, {0, 0, colour.width(), colour.height()}, [&](Span span) {
+    rasterize_convex(points, clip, [&](Span span) {
         const double i = span.x_begin, j = span.y;
         const double a = w1.at(i, j), b = w2.at(i, j);
         Varying varying = base + along1 * static_cast<float>(a) + along2 * static_cast<float>(b);
@@ -212,6 +215,15 @@ std::vector<typename Shader::Varying> vertex_varyings(const Shader& shader, cons
     return varyings;
 }
 
+// Whether a triangle's corners leave every pixel centre of a band of rows above or below them,
+// so that a banded render can skip it before any shading work.
+inline bool misses_rows(const std::array<SubpixelPoint, 3>& points, const std::optional<PixelRect>& rows) noexcept {
+    if (!rows) return false;
+    const std::int32_t low = std::min({points[0].y, points[1].y, points[2].y});
+    const std::int32_t high = std::max({points[0].y, points[1].y, points[2].y});
+    return high < rows->y * kSubpixelOne || low > (rows->y + rows->height - 1) * kSubpixelOne;
+}
+
 struct ScreenVertex {
     std::optional<SubpixelPoint> at;  // nothing when not finite or too far away
     float depth;
@@ -221,7 +233,7 @@ struct ScreenVertex {
 // or, for facet normals, once per facet.
 template <typename Shader, typename DepthFormat = FloatDepth>
 std::size_t draw_facets(Framebuffer& colour, DepthBuffer* depth_buffer, const OrthoCamera& camera, const Mesh& mesh,
-                        const Shader& shader, DepthFormat stored = {}) {
+                        const Shader& shader, DepthFormat stored = {}, std::optional<PixelRect> rows = std::nullopt) {
     using Varying = typename Shader::Varying;
     check_drawable(colour, depth_buffer, mesh);
     std::vector<ScreenVertex> screen;
@@ -246,10 +258,11 @@ std::size_t draw_facets(Framebuffer& colour, DepthBuffer* depth_buffer, const Or
         if (!on_screen) continue;
         const std::array<SubpixelPoint, 3> points{corners[0].at, corners[1].at, corners[2].at};
         if (twice_signed_area(points) <= 0) continue;  // facing away, or seen edge-on
+        ++drawn;
+        if (misses_rows(points, rows)) continue;  // another band's
         const std::array<Varying, 3> values = facet_varyings(shader, mesh, facet, varyings);
         for (std::size_t k = 0; k < 3; ++k) corners[k].varying = values[k];
-        shade_triangle(colour, depth_buffer, corners, shader, stored);
-        ++drawn;
+        shade_triangle(colour, depth_buffer, corners, shader, stored, rows);
     }
     return drawn;
 }

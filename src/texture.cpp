@@ -24,7 +24,8 @@ int wrapped_index(int i, int n, TextureWrap wrap) noexcept {
 }
 
 // The next mip level: each texel the mean, in linear light, of the 2 x 2 texels it covers (one
-// row or column where a side is already 1 texel, the last ones repeated on odd sides).
+// row or column where a side is already 1 texel); an odd side's last row or column is left out,
+// as a plain box filter does.
 Framebuffer halved(const Framebuffer& level, const std::array<float, 256>& linear) {
     const int width = std::max(1, level.width() / 2), height = std::max(1, level.height() / 2);
     Framebuffer next(width, height);

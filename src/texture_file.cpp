@@ -3,11 +3,13 @@
 
 #include <raster/webp.hpp>
 
+#include <algorithm>
 #include <fstream>
 #include <limits>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <system_error>
 #include <vector>
 #include <stb_image.h>
@@ -16,13 +18,27 @@ namespace raster {
 
 namespace {
 
+// Whether bytes begin like one of stb_image's formats that raster does not read (PSD, HDR, PIC,
+// PNM, GIF): stb_image is not hardened against hostile files, so only the documented formats
+// reach it.
+bool unsupported_format(std::span<const std::uint8_t> bytes) {
+    const auto starts = [&](std::string_view magic) {
+        return bytes.size() >= magic.size() && std::equal(magic.begin(), magic.end(), bytes.begin(), [](char m, std::uint8_t b) {
+                   return static_cast<std::uint8_t>(m) == b;
+               });
+    };
+    return starts("8BPS") || starts("#?RADIANCE") || starts("#?RGBE") || starts("\x53\x80\xF6\x34") || starts("GIF8") ||
+           (bytes.size() >= 2 && bytes[0] == 'P' && bytes[1] >= '1' && bytes[1] <= '7');
+}
+
 Framebuffer decode_with_stb(std::span<const std::uint8_t> bytes, std::size_t max_texels) {
+    if (unsupported_format(bytes)) throw std::runtime_error("a PSD, HDR, PIC, PNM or GIF image; raster reads PNG, JPEG, TGA, BMP and WebP");
     if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max())) throw std::runtime_error("image file too large");
     const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
     const int length = static_cast<int>(bytes.size());
     int width = 0, height = 0, channels = 0;
     if (stbi_info_from_memory(data, length, &width, &height, &channels) == 0) {
-        throw std::runtime_error("not an image raster can read (PNG, JPEG, TGA, BMP, GIF, PSD, HDR, PNM or WebP)");
+        throw std::runtime_error("not an image raster can read (PNG, JPEG, TGA, BMP or WebP)");
     }
     const auto texels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
     if (width < 1 || height < 1 || texels > max_texels || width > kMaxImageSide || height > kMaxImageSide) {

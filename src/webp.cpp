@@ -2,7 +2,11 @@
 #include <raster/webp.hpp>
 
 #include <algorithm>
+#include <deque>
 #include <fstream>
+#include <future>
+#include <optional>
+#include <thread>
 #include <iterator>
 #include <limits>
 #include <stdexcept>
@@ -42,6 +46,18 @@ WebPConfig lossless_config(Effort effort) {
     return config;
 }
 
+// Each frame's own lossless settings on the parallel path, chosen from the encode lab's Pareto
+// front (doc/performance.md): the changed rectangles are small, so a lighter method costs
+// little size.
+WebPConfig parallel_config(Effort effort) {
+    WebPConfig config = lossless_config(effort);
+    if (effort == Effort::balanced) {
+        config.method = 2;
+        config.quality = 50.0F;
+    }
+    return config;
+}
+
 // A WebPPicture holding a copy of the frame's pixels, freed on scope exit.
 struct Picture {
     WebPPicture picture;
@@ -78,20 +94,30 @@ Framebuffer framebuffer_from_rgba(const std::uint8_t* rgba, int width, int heigh
     return {width, height, std::move(rgb)};
 }
 
+// The lossless bytes of one picture: a whole frame, or the rectangle of it that changed.
+std::vector<std::uint8_t> encode_lossless(const std::uint8_t* rgb, int width, int height, int stride, const WebPConfig& config) {
+    WebPPicture picture;
+    if (!WebPPictureInit(&picture)) throw std::runtime_error("libwebp version mismatch");
+    picture.use_argb = 1;
+    picture.width = width;
+    picture.height = height;
+    const std::unique_ptr<WebPPicture, void (*)(WebPPicture*)> owned(&picture, WebPPictureFree);
+    if (!WebPPictureImportRGB(&picture, rgb, stride)) throw std::runtime_error("out of memory importing a frame");
+    WebPMemoryWriter memory;
+    WebPMemoryWriterInit(&memory);
+    picture.writer = WebPMemoryWrite;
+    picture.custom_ptr = &memory;
+    const bool encoded = WebPEncode(&config, &picture) != 0;
+    std::vector<std::uint8_t> bytes(memory.mem, memory.mem + memory.size);
+    WebPMemoryWriterClear(&memory);
+    if (!encoded) throw std::runtime_error("cannot encode a frame: libwebp error " + std::to_string(picture.error_code));
+    return bytes;
+}
+
 }  // namespace
 
 std::vector<std::uint8_t> encode_webp_still(const Framebuffer& image, Effort effort) {
-    const WebPConfig config = lossless_config(effort);
-    Picture frame(image);
-    WebPMemoryWriter memory;
-    WebPMemoryWriterInit(&memory);
-    frame.picture.writer = WebPMemoryWrite;
-    frame.picture.custom_ptr = &memory;
-    const bool encoded = WebPEncode(&config, &frame.picture) != 0;
-    std::vector<std::uint8_t> bytes(memory.mem, memory.mem + memory.size);
-    WebPMemoryWriterClear(&memory);
-    if (!encoded) throw std::runtime_error("cannot encode a still: libwebp error " + std::to_string(frame.picture.error_code));
-    return bytes;
+    return encode_lossless(image.bytes().data(), image.width(), image.height(), image.width() * 3, lossless_config(effort));
 }
 
 std::uintmax_t write_webp_still(const Framebuffer& image, const std::filesystem::path& path,
@@ -102,16 +128,63 @@ std::uintmax_t write_webp_still(const Framebuffer& image, const std::filesystem:
     return bytes.size();
 }
 
+namespace {
+
+// The smallest rectangle holding every pixel that differs between two frames of one size, its
+// corner moved up and left to even coordinates (WebP stores frame offsets halved); one pixel at
+// the origin when nothing changed, so that every frame keeps its place in the file.
+struct Region {
+    int x = 0, y = 0, width = 1, height = 1;
+};
+
+Region changed_region(const Framebuffer& before, const Framebuffer& after) {
+    const int w = after.width(), h = after.height();
+    const auto row_bytes = static_cast<std::size_t>(w) * 3;
+    const std::uint8_t* a = before.bytes().data();
+    const std::uint8_t* b = after.bytes().data();
+    int top = h, bottom = -1, left = w, right = -1;
+    for (int y = 0; y < h; ++y) {
+        const std::uint8_t* ra = a + static_cast<std::size_t>(y) * row_bytes;
+        const std::uint8_t* rb = b + static_cast<std::size_t>(y) * row_bytes;
+        if (std::equal(ra, ra + row_bytes, rb)) continue;
+        top = std::min(top, y);
+        bottom = y;
+        int x0 = 0;
+        while (ra[x0 * 3] == rb[x0 * 3] && ra[x0 * 3 + 1] == rb[x0 * 3 + 1] && ra[x0 * 3 + 2] == rb[x0 * 3 + 2]) ++x0;
+        int x1 = w - 1;
+        while (ra[x1 * 3] == rb[x1 * 3] && ra[x1 * 3 + 1] == rb[x1 * 3 + 1] && ra[x1 * 3 + 2] == rb[x1 * 3 + 2]) --x1;
+        left = std::min(left, x0);
+        right = std::max(right, x1);
+    }
+    if (bottom < 0) return {};
+    const int x = left & ~1, y = top & ~1;
+    return {x, y, right + 1 - x, bottom + 1 - y};
+}
+
+struct EncodedFrame {
+    std::vector<std::uint8_t> bytes;
+    Region region;
+};
+
+}  // namespace
+
 struct AnimationEncoder::State {
     int width;
     int height;
     int frame_spacing_ms;
     std::int64_t next_timestamp_ms = 0;
     WebPConfig config;
+    AnimationPath path;
+    // libwebp's animation encoder (path anim).
     WebPAnimEncoder* encoder = nullptr;
+    // The parallel path: the last frame, the encodes in flight in frame order, and the file so far.
+    std::size_t threads = 1;
+    std::optional<Framebuffer> previous;
+    std::deque<std::future<EncodedFrame>> in_flight;
+    WebPMux* mux = nullptr;
 
-    State(int w, int h, int spacing, Effort effort)
-        : width(w), height(h), frame_spacing_ms(spacing), config(lossless_config(effort)) {
+    State(int w, int h, int spacing, AnimationSettings settings)
+        : width(w), height(h), frame_spacing_ms(spacing), config(lossless_config(settings.effort)), path(settings.path) {
         if (w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide) {
             throw std::invalid_argument("animation size must be 1.." + std::to_string(kMaxImageSide) +
                                         " on each side, got " + std::to_string(w) + "x" + std::to_string(h));
@@ -120,16 +193,37 @@ struct AnimationEncoder::State {
             throw std::invalid_argument("frame spacing must be 1.." + std::to_string(kMaxFrameSpacingMs) +
                                         " ms, got " + std::to_string(spacing));
         }
+        if (settings.threads < 0) throw std::invalid_argument("thread count must be 0 (every core) or more");
+        if (settings.tuning) {
+            const LosslessTuning& t = *settings.tuning;
+            if (t.method < 0 || t.method > 6 || !(t.quality >= 0.0F && t.quality <= 100.0F)) {
+                throw std::invalid_argument("lossless tuning needs a method 0..6 and a quality 0..100");
+            }
+        }
+        if (path == AnimationPath::parallel) {
+            config = parallel_config(settings.effort);
+            if (settings.tuning) config.method = settings.tuning->method, config.quality = settings.tuning->quality;
+            threads = settings.threads > 0 ? static_cast<std::size_t>(settings.threads)
+                                           : std::max(1U, std::thread::hardware_concurrency());
+            mux = WebPMuxNew();
+            if (mux == nullptr) throw std::runtime_error("cannot start the WebP muxer");
+            return;
+        }
+        if (settings.tuning) config.method = settings.tuning->method, config.quality = settings.tuning->quality;
         WebPAnimEncoderOptions options;
         if (!WebPAnimEncoderOptionsInit(&options)) throw std::runtime_error("libwebp version mismatch");
-        options.minimize_size = settings_for(effort).minimize_size ? 1 : 0;
+        options.minimize_size = settings_for(settings.effort).minimize_size ? 1 : 0;
         options.allow_mixed = 0;
         options.anim_params.loop_count = 0;
         options.anim_params.bgcolor = 0xFF000000U;  // opaque black, ARGB
         encoder = WebPAnimEncoderNew(width, height, &options);
         if (encoder == nullptr) throw std::runtime_error("cannot start the WebP animation encoder");
     }
-    ~State() { WebPAnimEncoderDelete(encoder); }
+    ~State() {
+        in_flight.clear();  // waits for encodes still running
+        WebPAnimEncoderDelete(encoder);
+        WebPMuxDelete(mux);
+    }
     State(const State&) = delete;
     State& operator=(const State&) = delete;
 
@@ -145,10 +239,61 @@ struct AnimationEncoder::State {
     [[noreturn]] void fail(const std::string& what) {
         throw std::runtime_error("cannot encode the animation: " + what + ": " + WebPAnimEncoderGetError(encoder));
     }
+
+    // Starts encoding a frame's changed rectangle; waits for the oldest encode while too many run.
+    void add_in_parallel(const Framebuffer& frame) {
+        const Region region = previous ? changed_region(*previous, frame) : Region{0, 0, width, height};
+        // The task gets its own copy of the rectangle, so the caller may reuse the frame at once.
+        std::vector<std::uint8_t> pixels(static_cast<std::size_t>(region.width) * static_cast<std::size_t>(region.height) * 3);
+        const auto row = static_cast<std::size_t>(region.width) * 3;
+        for (int y = 0; y < region.height; ++y) {
+            const std::uint8_t* from = frame.bytes().data() + (static_cast<std::size_t>(region.y + y) * static_cast<std::size_t>(width) +
+                                                              static_cast<std::size_t>(region.x)) * 3;
+            std::copy(from, from + row, pixels.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(y) * row));
+        }
+        in_flight.push_back(std::async(std::launch::async, [pixels = std::move(pixels), region, config = config] {
+            return EncodedFrame{encode_lossless(pixels.data(), region.width, region.height, region.width * 3, config), region};
+        }));
+        if (previous) {
+            std::copy(frame.bytes().begin(), frame.bytes().end(), previous->pixels());
+        } else {
+            previous.emplace(frame);
+        }
+        while (in_flight.size() > threads) collect_oldest();
+    }
+
+    // Appends the oldest finished encode to the file, in frame order.
+    void collect_oldest() {
+        const EncodedFrame encoded = in_flight.front().get();
+        in_flight.pop_front();
+        WebPMuxFrameInfo info{};
+        info.bitstream = {encoded.bytes.data(), encoded.bytes.size()};
+        info.x_offset = encoded.region.x;
+        info.y_offset = encoded.region.y;
+        info.duration = frame_spacing_ms;
+        info.id = WEBP_CHUNK_ANMF;
+        info.dispose_method = WEBP_MUX_DISPOSE_NONE;
+        info.blend_method = WEBP_MUX_NO_BLEND;  // the rectangle replaces what was there
+        if (WebPMuxPushFrame(mux, &info, 1) != WEBP_MUX_OK) throw std::runtime_error("cannot add a frame to the animation");
+    }
+
+    std::vector<std::uint8_t> assemble_parallel() {
+        while (!in_flight.empty()) collect_oldest();
+        const WebPMuxAnimParams params{0xFF000000U, 0};  // opaque black background, loop forever
+        if (WebPMuxSetAnimationParams(mux, &params) != WEBP_MUX_OK || WebPMuxSetCanvasSize(mux, width, height) != WEBP_MUX_OK) {
+            throw std::runtime_error("cannot set the animation's canvas");
+        }
+        WebPData data;
+        WebPDataInit(&data);
+        if (WebPMuxAssemble(mux, &data) != WEBP_MUX_OK) throw std::runtime_error("cannot assemble the animation");
+        std::vector<std::uint8_t> bytes(data.bytes, data.bytes + data.size);
+        WebPDataClear(&data);
+        return bytes;
+    }
 };
 
-AnimationEncoder::AnimationEncoder(int width, int height, int frame_spacing_ms, Effort effort)
-    : state_(std::make_unique<State>(width, height, frame_spacing_ms, effort)) {}
+AnimationEncoder::AnimationEncoder(int width, int height, int frame_spacing_ms, AnimationSettings settings)
+    : state_(std::make_unique<State>(width, height, frame_spacing_ms, settings)) {}
 
 AnimationEncoder::~AnimationEncoder() = default;
 AnimationEncoder::AnimationEncoder(AnimationEncoder&&) noexcept = default;
@@ -161,9 +306,13 @@ void AnimationEncoder::add_frame(const Framebuffer& frame) {
     }
     const int end_ms = state_->end_of_next_frame();  // the last frame needs its end stamp too
     const auto start_ms = static_cast<int>(state_->next_timestamp_ms);
-    Picture picture(frame);
-    if (!WebPAnimEncoderAdd(state_->encoder, &picture.picture, start_ms, &state_->config)) {
-        state_->fail("frame at " + std::to_string(start_ms) + " ms");
+    if (state_->path == AnimationPath::parallel) {
+        state_->add_in_parallel(frame);
+    } else {
+        Picture picture(frame);
+        if (!WebPAnimEncoderAdd(state_->encoder, &picture.picture, start_ms, &state_->config)) {
+            state_->fail("frame at " + std::to_string(start_ms) + " ms");
+        }
     }
     state_->next_timestamp_ms = end_ms;
 }
@@ -171,6 +320,10 @@ void AnimationEncoder::add_frame(const Framebuffer& frame) {
 std::vector<std::uint8_t> AnimationEncoder::finish() {
     if (!state_) throw std::logic_error("AnimationEncoder::finish() called twice");
     const std::unique_ptr<State> state = std::move(state_);
+    if (state->path == AnimationPath::parallel) {
+        if (!state->previous) throw std::logic_error("an animation needs at least one frame");
+        return state->assemble_parallel();
+    }
     // A last empty add sets the final frame's duration to one full spacing.
     if (!WebPAnimEncoderAdd(state->encoder, nullptr, static_cast<int>(state->next_timestamp_ms), nullptr)) {
         state->fail("end of animation");
@@ -184,8 +337,8 @@ std::vector<std::uint8_t> AnimationEncoder::finish() {
 }
 
 AnimationWriter::AnimationWriter(const std::filesystem::path& path, int width, int height,
-                                 int frame_spacing_ms, Effort effort, OutputPolicy policy)
-    : path_(path), policy_(policy), encoder_(width, height, frame_spacing_ms, effort) {
+                                 int frame_spacing_ms, AnimationSettings settings, OutputPolicy policy)
+    : path_(path), policy_(policy), encoder_(width, height, frame_spacing_ms, settings) {
     check_output_path(path_, policy_);
 }
 

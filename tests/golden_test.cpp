@@ -151,7 +151,7 @@ TEST(Golden, ReadmeTorusIsWhatAnimatedSceneDrawsToday) {
 }
 
 // What `render` draws of a model it reads: a textured crate on a floor, each shading, the
-// orthographic view, a turntable frame and each texture filter.
+// orthographic view, a turntable frame, a low eye, and nearest filtering.
 TEST(Golden, ModelsThroughEachShadingAndView) {
     const test_support::ScratchDir dir;
     const auto model = std::make_shared<const raster::Model>(raster::read_obj(test_support::write_crate_on_floor(dir.path())));
@@ -175,10 +175,15 @@ TEST(Golden, ModelsThroughEachShadingAndView) {
     low.eye = glm::dvec3(0.0, -0.6, 5.0);
     low.fov_degrees = 60.0;
     cases.push_back({"low-eye", low});
+    cases.push_back({"nearest", raster::ModelView{}});
     for (const Case& c : cases) {
         Framebuffer image(160, 120);
         raster::DepthBuffer depth;
-        raster::ModelStage(model, c.view, image.width(), image.height()).render(image, depth, c.turn);
+        auto copy = std::make_shared<raster::Model>(*model);
+        if (c.name == "nearest") {
+            for (raster::ModelPart& part : copy->parts) part.sampler.filter = raster::TextureFilter::nearest;
+        }
+        raster::ModelStage(copy, c.view, image.width(), image.height()).render(image, depth, c.turn);
         EXPECT_TRUE(matches_snapshot(image, "models/crate-" + c.name));
     }
 }

@@ -89,14 +89,45 @@ TEST(ObjFile, EachMaterialIsAPartWithItsColours) {
 
 TEST(ObjFile, BadIndicesAndPointsAreOneLineErrors) {
     const std::string triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
-    EXPECT_EQ(error_of(triangle + "f 1 2 9\n"), "<memory>: face 1 names vertex 9, but the file has 3");
-    EXPECT_NE(error_of(triangle + "f 1 2 -7\n"), "");
-    EXPECT_EQ(error_of(triangle + "vt 0 0\nf 1/1 2/5 3/1\n"), "<memory>: face 1 names texture coordinate 5, but the file has 1");
+    EXPECT_EQ(error_of(triangle + "f 1 2 9\n"), "<memory>:4: face names vertex 9, but 3 are defined before it");
+    EXPECT_EQ(error_of(triangle + "f 1 2 3 9\n"), "<memory>:4: face names vertex 9, but 3 are defined before it");  // a quad too
+    EXPECT_EQ(error_of(triangle + "f 1 2 -7\n"), "<memory>:4: face names vertex -7, but 3 are defined before it");
+    EXPECT_EQ(error_of("v 0 0 0\nf 1 2 3\nv 1 0 0\nv 0 1 0\n"), "<memory>:2: face names vertex 2, but 1 is defined before it");
+    EXPECT_EQ(error_of(triangle + "vt 0 0\nf 1/1 2/5 3/1\n"), "<memory>:5: face names texture coordinate 5, but 1 is defined before it");
+    EXPECT_EQ(error_of(triangle + "f 1//1 2//1 3//1\n"), "<memory>:4: face names normal 1, but 0 are defined before it");
+    EXPECT_EQ(error_of(triangle + "f 0 1 2\n"), "<memory>:4: vertex index 0: OBJ counts from 1");
+    EXPECT_EQ(error_of(triangle + "f 1 x 3\n"), "<memory>:4: 'x' is not a vertex index");
+    std::string many = triangle + "f";
+    for (std::size_t i = 0; i <= raster::kMaxFaceCorners; ++i) many += " " + std::to_string(i % 3 + 1);
+    EXPECT_EQ(error_of(many + "\n"), "<memory>:4: a face of more than 1024 corners");
     EXPECT_EQ(error_of("v 0 0 0\nv 1 0 0\nv 0 -1e39 0\nf 1 2 3\n"), "<memory>: vertex 3 is not a finite point");
     EXPECT_EQ(error_of("v 0 0 0\nv 1e39 0 0\nv 0 1 0\nf 1 2 3\n"), "<memory>: vertex 2 is not a finite point");
     EXPECT_EQ(error_of(""), "<memory>: no faces to draw");
     EXPECT_EQ(error_of(triangle), "<memory>: no faces to draw");
     EXPECT_EQ(error_of("v 0 0 0\nv 0 0 0\nv 0 0 0\nf 1 2 3\n"), "<memory>: no faces to draw");  // no area
+}
+
+TEST(ObjFile, HugeAndTinyModelsKeepTheirFaces) {
+    for (const char* scale : {"1e10", "1e-12", "3e37"}) {
+        const std::string s(scale);
+        const Model model = parse_obj("v 0 0 0\nv " + s + " 0 0\nv 0 " + s + " 0\nf 1 2 3\n", "");
+        ASSERT_EQ(raster::triangle_count(model), 1U) << scale;
+        EXPECT_EQ(model.parts[0].mesh.facets[0].normal, glm::vec3(0, 0, -1)) << scale;
+    }
+}
+
+TEST(ObjFile, AMissingKdIsTinyobjloadersGreyAndEachMapFileIsReadOnce) {
+    const test_support::ScratchDir dir;
+    test_support::write_png(dir / "big.png", test_support::checkerboard(2, 2, {10, 20, 30}, {40, 50, 60}));
+    test_support::write_text(dir / "two.mtl", "newmtl a\nmap_Kd big.png\nnewmtl b\nKd 1 1 1\nmap_Kd ./big.png\n");
+    std::string obj = test_support::textured_cube_obj("two.mtl", "a");
+    obj += "usemtl b\nf 1/1 2/2 3/3\n";
+    test_support::write_text(dir / "two.obj", obj);
+    const Model model = raster::read_obj(dir / "two.obj");
+    ASSERT_EQ(model.parts.size(), 2U);
+    EXPECT_EQ(model.parts[0].material.diffuse, (raster::LinearRgb{0.6F, 0.6F, 0.6F}));  // tinyobjloader's default Kd
+    ASSERT_NE(model.parts[0].texture, nullptr);
+    EXPECT_EQ(model.parts[0].texture, model.parts[1].texture);  // big.png and ./big.png: one file, read once
 }
 
 TEST(ObjFile, FacesWithFewerThanThreeCornersAreSkippedWithAWarning) {

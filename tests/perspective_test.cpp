@@ -180,6 +180,48 @@ TEST(Clipping, ATriangleCrossingTheFarPlaneDrawsItsPartNearerThanFar) {
     EXPECT_NE(clipped, whole);  // with a farther far plane more of it shows
 }
 
+namespace {
+
+// Keeps every point it is handed with its change per pixel in x, and writes the point's index.
+struct FootprintRecorder {
+    using Varying = glm::vec3;
+    static constexpr bool kFacetNormal = false;
+    std::vector<std::pair<glm::vec3, glm::vec3>>* seen;
+    [[nodiscard]] Varying vertex(const raster::Corner& corner) const noexcept { return corner.position; }
+    [[nodiscard]] raster::Rgb pixel(const glm::vec3& world, const glm::vec3& per_x, const glm::vec3&) const noexcept {
+        const auto index = static_cast<std::uint32_t>(seen->size());
+        seen->emplace_back(world, per_x);
+        return {static_cast<std::uint8_t>(index >> 16), static_cast<std::uint8_t>(index >> 8), static_cast<std::uint8_t>(index)};
+    }
+};
+
+}  // namespace
+
+// The change per pixel a shader is handed (for mip levels) is the true derivative of the
+// perspective-correct value: it matches the difference between neighbouring pixels.
+TEST(PerspectiveInterpolation, ShadersGetTheExactChangePerPixel) {
+    const PerspectiveCamera camera = PerspectiveCamera::look_at(40, 30, {0, 1, -1}, {0, 0, 3}, {0, 1, 0}, {70, 0.1, 100});
+    raster::Mesh floor = raster::ground_quad({-2, 0, 0}, {2, 0, 0}, {2, 0, 20}, {-2, 0, 20});
+    floor.surface = raster::Surface::smooth;
+    Framebuffer image(40, 30);
+    image.clear({255, 255, 255});
+    std::vector<std::pair<glm::vec3, glm::vec3>> seen;
+    raster::detail::draw_facets_in_perspective(image, nullptr, camera, floor, FootprintRecorder{&seen});
+    int compared = 0;
+    for (int y = 0; y < 30; ++y) {
+        for (int x = 0; x + 1 < 40; ++x) {
+            const std::uint32_t a = lab::recorded_index(image, x, y), b = lab::recorded_index(image, x + 1, y);
+            if (a >= seen.size() || b >= seen.size()) continue;
+            const glm::vec3 difference = seen[b].first - seen[a].first;
+            const glm::vec3 mean_change = (seen[a].second + seen[b].second) * 0.5F;  // the derivative at the midpoint, to second order
+            EXPECT_NEAR(mean_change.x, difference.x, 1e-3F + 0.01F * std::abs(difference.x)) << x << "," << y;
+            EXPECT_NEAR(mean_change.z, difference.z, 1e-3F + 0.01F * std::abs(difference.z)) << x << "," << y;
+            ++compared;
+        }
+    }
+    EXPECT_GT(compared, 200);
+}
+
 // Under perspective, attributes are interpolated through 1/w: the world position a shader sees
 // at each covered pixel lies on the line of sight through that pixel's centre.
 TEST(PerspectiveInterpolation, TheSurfacePointAtEveryPixelIsOnItsLineOfSight) {

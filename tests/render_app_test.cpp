@@ -91,7 +91,9 @@ TEST(RenderApp, BadModelsAndOptionsFailWithOneLine) {
     test_support::write_text(dir / "ok.obj", test_support::textured_cube_obj("", ""));
     std::filesystem::create_directory(dir / "folder.obj");
     const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
-        {{"bad.obj"}, "render: bad.obj: face 1 names vertex 7, but the file has 2\n"},
+        {{"bad.obj"}, "render: bad.obj:3: face names vertex 7, but 2 are defined before it\n"},
+        {{"ok.obj", "--near", "5", "--far", "1"}, "render: --near must be less than --far, got 5.000000 and 1.000000\n"},
+        {{"ok.obj", "--ortho", "--near", "1"}, "render: --near and --far set a perspective lens; an orthographic view draws the whole model\n"},
         {{"empty.obj"}, "render: empty.obj: no faces to draw\n"},
         {{"folder.obj"}, "render: folder.obj: is a directory, not a file\n"},
         {{"ok.obj", "--texture", "nowhere.png"}, "render: nowhere.png: cannot read: No such file or directory\n"},

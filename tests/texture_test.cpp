@@ -101,6 +101,28 @@ TEST(Texture, TrilinearPicksTheLevelWhoseTexelsMatchThePixelStep) {
     EXPECT_EQ(at(texture, 0.5F * texel, 1.0F - 0.5F * texel, kBilinear, {{2 * texel, 0.0F}, {0.0F, 2 * texel}}), kBlack);
 }
 
+TEST(Texture, BetweenLevelsTrilinearBlendsByTheFractionOfTheLevel) {
+    // Left half black, right half white: levels 0 and 1 keep the halves, level 2 is grey.
+    Framebuffer halves(4, 4);
+    for (int y = 0; y < 4; ++y) halves.fill_row(y, 2, 4, kWhite);
+    const Texture texture(halves);
+    ASSERT_EQ(texture.level_count(), 3U);
+    const Sampler trilinear{TextureFilter::trilinear, TextureWrap::clamp};
+    const float step = 3.0F / 4.0F;  // three level-0 texels a pixel: lambda = log2(3) = 1.585
+    const LinearRgb c = texture.sample({0.25F, 0.5F}, {{step, 0.0F}, {0.0F, step}}, trilinear);
+    const float blend = std::log2(3.0F) - 1.0F;
+    const float grey = raster::linear_from_srgb(texture.level(2).pixel(0, 0)).r;  // 0.5, as the nearest sRGB byte holds it
+    EXPECT_NEAR(c.r, grey * blend, 1e-5F);  // level 1 black, level 2 grey
+    EXPECT_NEAR(c.g, c.r, 1e-6F);
+}
+
+TEST(TextureFile, FormatsBeyondTheDocumentedOnesAreRefused) {
+    for (const std::string& head : {std::string("GIF89a\x01\0\x01\0", 10), std::string("8BPS\0\x01"), std::string("P6\n1 1\n255\n\0\0\0", 14)}) {
+        const std::vector<std::uint8_t> bytes(head.begin(), head.end());
+        EXPECT_THROW((void)raster::decode_texture(bytes), std::runtime_error) << head;
+    }
+}
+
 TEST(Texture, NonFiniteCoordinatesAndFootprintsStillGiveAColour) {
     const Texture texture(test_support::checkerboard(8, 2, kBlack, kWhite));
     const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();

@@ -12,6 +12,8 @@ usage: tools/bootstrap.sh COMMAND
   fuzz [SECONDS]     build the libFuzzer targets with clang; fuzz fill and line, the mesh
                      pipeline, then model and texture loading, for SECONDS each (default 60)
   lab                measure every raster method and redraw the charts in doc/lab/
+  bench [N]          build raster-vs-gl and time raster against Mesa's llvmpipe, every case
+                     N times (default 3), interleaved; writes doc/bench/
   -h, --help         print this help
 Each command first installs the Debian 12 packages it needs that are missing (apt-get, with
 sudo when not root).
@@ -79,6 +81,12 @@ lab)
     install_missing "${base_packages[@]}" gnuplot-nox
     build release
     cmake --build --preset release --target lab
+    ;;
+bench)
+    install_missing "${base_packages[@]}" gnuplot-nox libosmesa6-dev
+    cmake --preset release -DRASTER_BUILD_BENCH=ON
+    cmake --build --preset release -j "$(nproc)" --target raster-vs-gl
+    tools/bench-gl.sh "${2:-3}"
     ;;
 -h | --help)
     usage

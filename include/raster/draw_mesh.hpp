@@ -8,6 +8,8 @@
 #include <raster/textured_shaders.hpp>
 
 #include <cstddef>
+#include <optional>
+#include <raster/fill.hpp>
 
 namespace raster {
 
@@ -16,6 +18,8 @@ namespace raster {
 struct RenderTarget {
     Framebuffer& colour;
     DepthBuffer* depth = nullptr;
+    // The band of rows to draw into, for one thread of a banded render; nothing: every row.
+    std::optional<PixelRect> rows = std::nullopt;
 };
 
 // Draws the facets of a posed mesh that face the camera (positive snapped area, the numbers

@@ -36,7 +36,7 @@ public:
 
     // Draws the model turned by `turn` radians about the up axis through the target: a
     // turntable's frame. Returns the facets drawn.
-    std::size_t render(Framebuffer& frame, DepthBuffer& depth, double turn = 0.0) const;
+    std::size_t render(Framebuffer& frame, DepthBuffer& depth, double turn = 0.0, RenderOptions options = {}) const;
 
 private:
     [[nodiscard]] std::vector<SceneObject> objects(double turn) const;

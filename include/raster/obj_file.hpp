@@ -12,6 +12,10 @@ namespace raster {
 
 // The largest OBJ or MTL file read, in bytes.
 inline constexpr std::uintmax_t kMaxModelFileBytes = std::uintmax_t{1} << 30;
+// The most corners one face may have: splitting a polygon takes time quadratic in its corners.
+inline constexpr std::size_t kMaxFaceCorners = 1024;
+// The most texels all of one model's textures may hold together: four of the largest.
+inline constexpr std::size_t kMaxModelTexels = 4 * kMaxTextureTexels;
 
 struct ObjOptions {
     // Normals the file lacks are made per corner: facets meeting at less than this angle are
@@ -22,8 +26,9 @@ struct ObjOptions {
 };
 
 // Reads an OBJ file, the MTL files it names (beside it) and their diffuse maps (relative to the
-// MTL file). Throws std::runtime_error with one line naming the file (and the face or line where
-// known) for a file it cannot use; problems it can work around become the model's warnings.
+// MTL file). Throws std::runtime_error with one line naming the file (and the line, as
+// "file:12: ...", where known) for a file it cannot use; problems it can work around become the
+// model's warnings.
 [[nodiscard]] Model read_obj(const std::filesystem::path& path, const ObjOptions& options = {});
 
 // The same from text in memory, `mtl` standing for every material library the OBJ names; maps

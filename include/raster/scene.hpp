@@ -64,13 +64,19 @@ template <typename Camera>
     return needs_depth(std::span<const SceneObject>(scene.objects));
 }
 
+// How a frame is drawn: on how many threads, each owning a band of rows. The picture is the
+// same, bit for bit, whatever the count (doc/conventions.md#threads).
+struct RenderOptions {
+    int threads = 1;  // 0: one per core
+};
+
 // Clears to the background and draws every object; `depth` is prepared and used only when the
 // scene needs it, so a lone convex mesh never touches it. Returns the facets drawn.
-std::size_t render(Framebuffer& framebuffer, const Scene& scene, DepthBuffer& depth);
+std::size_t render(Framebuffer& framebuffer, const Scene& scene, DepthBuffer& depth, RenderOptions options = {});
 // The same in perspective: triangles are clipped to the near and far planes (and a guard band),
 // attributes interpolated through 1/w, and the viewer's direction taken at each point
 // (doc/conventions.md#perspective). The camera must have the framebuffer's size.
-std::size_t render(Framebuffer& framebuffer, const PerspectiveScene& scene, DepthBuffer& depth);
+std::size_t render(Framebuffer& framebuffer, const PerspectiveScene& scene, DepthBuffer& depth, RenderOptions options = {});
 
 // The scene through a pinhole of vertical field of view `fov_degrees` (0 < fov < 180): the eye
 // moves back along its line of sight until the plane through the world origin keeps the

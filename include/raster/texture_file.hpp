@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <span>
 
-// Textures read from image files: PNG, JPEG, TGA, BMP (and the rest stb_image knows) and WebP.
+// Textures read from image files: PNG, JPEG, TGA and BMP through stb_image, and WebP.
 namespace raster {
 
 // The most texels a texture file may hold, 4096 x 4096 or the same count in another shape;
@@ -16,7 +16,7 @@ inline constexpr std::size_t kMaxTextureTexels = std::size_t{4096} * 4096;
 // The largest texture file read, in bytes: enough for any image within the texel limit.
 inline constexpr std::uintmax_t kMaxTextureFileBytes = std::uintmax_t{256} << 20;
 
-// Decodes an image held in memory (WebP by its signature, anything else through stb_image),
+// Decodes an image held in memory (WebP by its signature, PNG, JPEG, TGA and BMP through stb_image),
 // keeping red, green and blue as sRGB bytes and dropping alpha. Throws std::runtime_error with a
 // one-line reason.
 [[nodiscard]] Texture decode_texture(std::span<const std::uint8_t> bytes, std::size_t max_texels = kMaxTextureTexels);

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -32,12 +33,38 @@ inline constexpr int kMaxFrameSpacingMs = (1 << 24) - 1;
 std::uintmax_t write_webp_still(const Framebuffer& image, const std::filesystem::path& path,
                                 Effort effort = Effort::balanced, OutputPolicy policy = {});
 
-// Collects frames into the bytes of a lossless animation that loops forever.
+// How an animation's frames are compressed (doc/performance.md has the measurements).
+enum class AnimationPath {
+    // Each frame's changed rectangle encoded losslessly on its own, on a pool of threads while
+    // later frames render, then assembled in order: the default.
+    parallel,
+    // libwebp's animation encoder, on one thread: it also tries blending and merging frames.
+    anim,
+};
+
+// libwebp's lossless method (0..6) and quality (0..100), for the lab's sweeps.
+struct LosslessTuning {
+    int method;
+    float quality;
+};
+
+struct AnimationSettings {
+    Effort effort = Effort::balanced;
+    AnimationPath path = AnimationPath::parallel;
+    int threads = 0;  // frames encoded at once on the parallel path; 0: one per core
+    std::optional<LosslessTuning> tuning{};  // replaces the effort's method and quality per frame
+};
+
+// Collects frames into the bytes of a lossless animation that loops forever. Every frame of the
+// file decodes to exactly the frame given, on either path; the parallel path holds at most
+// `threads` frames in flight, so memory does not grow with the frame count.
 class AnimationEncoder {
 public:
-    // Throws std::invalid_argument for a size outside 1..kMaxImageSide or a spacing outside
-    // 1..kMaxFrameSpacingMs.
-    AnimationEncoder(int width, int height, int frame_spacing_ms, Effort effort = Effort::balanced);
+    // Throws std::invalid_argument for a size outside 1..kMaxImageSide, a spacing outside
+    // 1..kMaxFrameSpacingMs or a negative thread count.
+    AnimationEncoder(int width, int height, int frame_spacing_ms, AnimationSettings settings = {});
+    AnimationEncoder(int width, int height, int frame_spacing_ms, Effort effort)
+        : AnimationEncoder(width, height, frame_spacing_ms, AnimationSettings{effort}) {}
     ~AnimationEncoder();
     AnimationEncoder(AnimationEncoder&&) noexcept;
     AnimationEncoder& operator=(AnimationEncoder&&) noexcept;
@@ -58,7 +85,10 @@ class AnimationWriter {
 public:
     // Checks the destination at once, so a bad path fails before any frame is rendered.
     AnimationWriter(const std::filesystem::path& path, int width, int height,
-                    int frame_spacing_ms, Effort effort = Effort::balanced, OutputPolicy policy = {});
+                    int frame_spacing_ms, AnimationSettings settings = {}, OutputPolicy policy = {});
+    AnimationWriter(const std::filesystem::path& path, int width, int height, int frame_spacing_ms, Effort effort,
+                    OutputPolicy policy = {})
+        : AnimationWriter(path, width, height, frame_spacing_ms, AnimationSettings{effort}, policy) {}
 
     void add_frame(const Framebuffer& frame) { encoder_.add_frame(frame); }
     // Encodes, replaces the file, and returns its size in bytes. Call once.

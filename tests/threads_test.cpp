@@ -1,0 +1,84 @@
+// Rendering on several threads and encoding on several: the same pictures and the same files
+// whatever the count.
+#include <raster/diary_scenes.hpp>
+#include <raster/model_scene.hpp>
+#include <raster/obj_file.hpp>
+#include <raster/scenes.hpp>
+#include <raster/seed_scenes.hpp>
+#include <raster/webp.hpp>
+
+#include "support/model_files.hpp"
+#include "support/scratch.hpp"
+
+#include <gtest/gtest.h>
+
+using raster::Framebuffer;
+
+namespace {
+
+constexpr int kWidth = 161, kHeight = 97;  // odd sizes: bands of unequal height
+
+template <typename Scene>
+Framebuffer rendered(const Scene& scene, int threads) {
+    Framebuffer image(kWidth, kHeight);
+    raster::DepthBuffer depth;
+    raster::render(image, scene, depth, {threads});
+    return image;
+}
+
+}  // namespace
+
+TEST(Threads, EveryThreadCountDrawsTheSamePicture) {
+    for (const std::string_view name : {"two-spheres", "torus", "shaders", "point-lights", "faceted-sphere"}) {
+        const raster::Scene scene = raster::DiaryScene(name).frame(kWidth, kHeight, 37, 360);
+        const Framebuffer one = rendered(scene, 1);
+        const raster::PerspectiveScene wide = raster::in_perspective(scene, kWidth, kHeight, 70.0);
+        const Framebuffer one_wide = rendered(wide, 1);
+        for (const int threads : {2, 3, 7, 0, kHeight}) {
+            EXPECT_EQ(rendered(scene, threads), one) << name << " on " << threads << " threads";
+            EXPECT_EQ(rendered(wide, threads), one_wide) << name << " in perspective on " << threads << " threads";
+        }
+    }
+    for (const raster::SeedSceneInfo& info : raster::seed_scenes()) {
+        const raster::PerspectiveScene scene = raster::SeedScene(info.name).frame(kWidth, kHeight, 50, info.frames);
+        const Framebuffer one = rendered(scene, 1);
+        for (const int threads : {2, 5}) EXPECT_EQ(rendered(scene, threads), one) << info.name << " on " << threads << " threads";
+    }
+}
+
+TEST(Threads, ARenderReturnsTheSameFacetCountAndRefusesANegativeCount) {
+    const raster::Scene scene = raster::DiaryScene("two-spheres").still(kWidth, kHeight);
+    Framebuffer image(kWidth, kHeight);
+    raster::DepthBuffer depth;
+    const std::size_t one = raster::render(image, scene, depth, {1});
+    EXPECT_GT(one, 0U);
+    EXPECT_EQ(raster::render(image, scene, depth, {4}), one);
+    EXPECT_THROW(raster::render(image, scene, depth, {-1}), std::invalid_argument);
+}
+
+TEST(Threads, ParallelAnimationsDecodeToEveryFrameAndMatchWhateverTheThreadCount) {
+    std::vector<Framebuffer> frames;
+    for (int i = 0; i < 12; ++i) {
+        frames.emplace_back(90, 70);
+        raster::render_tumble_frame(frames.back(), i, 12, raster::CubeStyle::filled);
+    }
+    frames.push_back(frames.back());  // an unchanged frame keeps its place
+    const test_support::ScratchDir dir;
+    std::vector<std::uint8_t> first;
+    for (const int threads : {1, 2, 5}) {
+        raster::AnimationEncoder encoder(90, 70, 20, {raster::Effort::fast, raster::AnimationPath::parallel, threads});
+        for (const Framebuffer& frame : frames) encoder.add_frame(frame);
+        const std::vector<std::uint8_t> bytes = encoder.finish();
+        if (first.empty()) first = bytes;
+        EXPECT_EQ(bytes, first) << threads << " threads";
+    }
+    test_support::write_text(dir / "p.webp", std::string(first.begin(), first.end()));
+    const raster::DecodedWebp decoded = raster::read_webp(dir / "p.webp");
+    ASSERT_EQ(decoded.frames.size(), frames.size());
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+        EXPECT_EQ(decoded.frames[i].image, frames[i]) << "frame " << i;
+        EXPECT_EQ(decoded.frames[i].start_ms, static_cast<int>(i) * 20);
+        EXPECT_EQ(decoded.frames[i].duration_ms, 20);
+    }
+    EXPECT_THROW(raster::AnimationEncoder(8, 8, 20, {raster::Effort::fast, raster::AnimationPath::parallel, -1}), std::invalid_argument);
+}

@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# raster against Mesa's software OpenGL (llvmpipe through OSMesa), every case on both sides,
+# interleaved, REPETITIONS times (default 3): raster on 1 thread and on every core, llvmpipe with
+# LP_NUM_THREADS=0 (one thread) and with its default. Writes doc/bench/gl-runs.csv (every run),
+# doc/bench/gl.csv (medians and ratios), doc/bench/gl.md (the table) and doc/bench/gl-*.svg.
+# Run by `tools/bootstrap.sh bench`, which builds build/release/bin/raster-vs-gl first.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+repetitions="${1:-3}"
+bin=build/release/bin/raster-vs-gl
+out=doc/bench
+mkdir -p "$out"
+# case width height frames
+cases=(
+    "torus-1 800 600 360" "torus-2 800 600 360" "torus-4 800 600 180" "torus-8 800 600 90" "torus-16 800 600 45"
+    "torus-1 1280 720 180" "torus-1 1920 1080 90" "torus-1 3840 2160 30" "torus-1 7680 4320 10"
+    "cube 800 600 360"
+)
+runs="$out/gl-runs.csv"
+echo "repetition,side,case,width,height,facets,threads,frames,seconds,fps,agreement" > "$runs"
+for ((r = 1; r <= repetitions; r++)); do
+    for c in "${cases[@]}"; do
+        read -r name width height frames <<<"$c"
+        common=(--case "$name" --width "$width" --height "$height" --frames "$frames")
+        agreement=()
+        [ "$r" -eq 1 ] && [ "$width" -le 1920 ] && agreement=(--agreement)
+        echo "$r,$("$bin" --side raster --threads 1 "${common[@]}" "${agreement[@]}")" >> "$runs"
+        echo "$r,$("$bin" --side raster --threads 0 "${common[@]}")" >> "$runs"
+        echo "$r,$(LP_NUM_THREADS=0 "$bin" --side gl "${common[@]}" | sed 's/^gl,/gl1,/')" >> "$runs"
+        echo "$r,$(env -u LP_NUM_THREADS "$bin" --side gl "${common[@]}" | sed 's/^gl,/glN,/')" >> "$runs"
+        echo "bench-gl: round $r, $name ${width}x$height" >&2
+    done
+done
+# Medians per case and side, then one row per case: fps of each, ratios, agreement.
+awk -F, 'NR > 1 {
+    key = $3 "," $4 "," $5; side = $2 (($2 == "raster") ? $7 : "")
+    n[key, side]++; v[key, side, n[key, side]] = $10; facets[key] = $6
+    if ($11 >= 0) agree[key] = $11
+    if (!(key in seen)) { seen[key] = 1; order[++keys] = key }
+}
+function median(key, side,    k, i, j, t, a) {
+    k = n[key, side]; for (i = 1; i <= k; i++) a[i] = v[key, side, i]
+    for (i = 1; i <= k; i++) for (j = i + 1; j <= k; j++) if (a[j] < a[i]) { t = a[i]; a[i] = a[j]; a[j] = t }
+    return (k % 2) ? a[(k + 1) / 2] : (a[k / 2] + a[k / 2 + 1]) / 2
+}
+BEGIN { print "case,width,height,facets,raster1,rasterN,gl1,glN,ratio1,ratioN,agreement" }
+END {
+    for (o = 1; o <= keys; o++) {
+        key = order[o]; r1 = median(key, "raster1"); rn = median(key, "raster0"); g1 = median(key, "gl1"); gn = median(key, "glN")
+        printf "%s,%s,%.1f,%.1f,%.1f,%.1f,%.2f,%.2f,%s\n", key, facets[key], r1, rn, g1, gn, r1 / g1, rn / gn, (key in agree) ? agree[key] : ""
+    }
+}' "$runs" > "$out/gl.csv"
+{
+    echo "| case | size | facets | raster, 1 thread | llvmpipe, 1 thread | ratio | raster, all cores | llvmpipe, default | ratio | pixels that agree (unlit) |"
+    echo "|---|---|---|---|---|---|---|---|---|---|"
+    awk -F, 'NR > 1 { printf "| %s | %sx%s | %s | %s | %s | %s | %s | %s | %s | %s |\n", $1, $2, $3, $4, $5, $7, $9, $6, $8, $10, ($11 == "") ? "" : sprintf("%.2f %%", 100 * $11) }' "$out/gl.csv"
+} > "$out/gl.md"
+if command -v gnuplot >/dev/null; then gnuplot -e "dir='$out'" bench/gl_charts.gp; fi
+echo "bench-gl: wrote $out/gl-runs.csv, $out/gl.csv, $out/gl.md" >&2
