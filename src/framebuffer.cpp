@@ -69,14 +69,19 @@ Rgb Framebuffer::pixel(int x, int y) const {
     return {bytes_[at], bytes_[at + 1], bytes_[at + 2]};
 }
 
-void Framebuffer::clear(Rgb colour) noexcept {
+void Framebuffer::clear(Rgb colour) noexcept { clear_rows(0, height_, colour); }
+
+void Framebuffer::clear_rows(int y_begin, int y_end, Rgb colour) noexcept {
+    y_begin = std::max(y_begin, 0);
+    y_end = std::min(y_end, height_);
+    if (y_begin >= y_end) return;
     // Paint one pixel, then keep doubling the painted prefix: memcpy speed for any colour.
-    bytes_[0] = colour.r;
-    bytes_[1] = colour.g;
-    bytes_[2] = colour.b;
-    for (std::size_t done = 3; done < bytes_.size(); done *= 2) {
-        std::memcpy(bytes_.data() + done, bytes_.data(), std::min(done, bytes_.size() - done));
-    }
+    std::uint8_t* const first = bytes_.data() + offset_of(0, y_begin, width_);
+    const std::size_t size = offset_of(0, y_end, width_) - offset_of(0, y_begin, width_);
+    first[0] = colour.r;
+    first[1] = colour.g;
+    first[2] = colour.b;
+    for (std::size_t done = 3; done < size; done *= 2) std::memcpy(first + done, first, std::min(done, size - done));
 }
 
 }  // namespace raster

@@ -80,17 +80,15 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
                            std::optional<glm::vec3> eye, RenderOptions options, DrawMesh draw_mesh_with) {
     const int threads = thread_count(options.threads, framebuffer.height());
     const bool depth_test = needs_depth(scene);
-    if (depth_test) depth.prepare(framebuffer.width(), framebuffer.height());
+    if (depth_test) depth.resize(framebuffer.width(), framebuffer.height());  // each band clears its own rows
     DepthBuffer* const tested = depth_test ? &depth : nullptr;
     const glm::vec3 to_eye = -scene.camera.direction();
     std::vector<Mesh> meshes;  // posed once, drawn by every band
     for (const SceneObject& object : scene.objects) meshes.push_back(object.mesh ? posed(*object.mesh, object.model) : Mesh{});
     const auto draw_band = [&](std::optional<PixelRect> rows) {
-        if (rows) {
-            for (int y = rows->y; y < rows->y + rows->height; ++y) framebuffer.fill_row(y, 0, framebuffer.width(), scene.background);
-        } else {
-            framebuffer.clear(scene.background);
-        }
+        const int top = rows ? rows->y : 0, bottom = rows ? rows->y + rows->height : framebuffer.height();
+        framebuffer.clear_rows(top, bottom, scene.background);
+        if (tested != nullptr) tested->clear_rows(top, bottom);
         std::size_t drawn = 0;
         for (std::size_t i = 0; i < scene.objects.size(); ++i) {
             if (!scene.objects[i].mesh) continue;  // an object without a mesh shows nothing

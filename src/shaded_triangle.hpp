@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <array>
+#include <concepts>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -95,6 +96,14 @@ void shade_triangle(Framebuffer& colour, DepthBuffer* depth,
     std::uint8_t* const pixels = colour.pixels();
     const std::size_t width = static_cast<std::size_t>(colour.width());
     const PixelRect clip = rows.value_or(PixelRect{0, 0, colour.width(), colour.height()});
+    // A Varying equal at all three corners (flat shading) is the same at every pixel: shaded
+    // once here, the pixels only take depth and the write. The colour is the one pixel() would give.
+    bool constant = false;
+    Rgb constant_colour{};
+    if constexpr (!NeedsFootprint<Shader> && std::equality_comparable<Varying>) {
+        constant = corners[1].varying == base && corners[2].varying == base;
+        if (constant) constant_colour = shader.pixel(base);
+    }
 
     if constexpr (kMode == Interpolation::perspective) {
         // Screen weights a, b of corners 1 and 2 become b_k / w_k over their sum: the weights
@@ -106,12 +115,17 @@ void shade_triangle(Framebuffer& colour, DepthBuffer* depth,
             for (int x = span.x_begin; x < span.x_end; ++x, out += 3) {
                 const double a = w1.at(x, span.y), b = w2.at(x, span.y);
                 const double q1 = a * inv1, q2 = b * inv2, sum = (1.0 - a - b) * inv0 + q1 + q2;
+                const double w = 1.0 / sum;  // the view depth; one division serves all three
                 if (nearest != nullptr) {
-                    const float z = stored(static_cast<float>(1.0 / sum));
+                    const float z = stored(static_cast<float>(w));
                     if (z > nearest[x - span.x_begin]) continue;  // something nearer is already there
                     nearest[x - span.x_begin] = z;
                 }
-                const double t1 = q1 / sum, t2 = q2 / sum;
+                if (constant) {
+                    out[0] = constant_colour.r, out[1] = constant_colour.g, out[2] = constant_colour.b;
+                    continue;
+                }
+                const double t1 = q1 * w, t2 = q2 * w;
                 const Varying varying = base + along1 * static_cast<float>(t1) + along2 * static_cast<float>(t2);
                 Rgb c;
                 if constexpr (NeedsFootprint<Shader>) {
@@ -145,11 +159,11 @@ void shade_triangle(Framebuffer& colour, DepthBuffer* depth,
                 if (z > nearest[k]) continue;  // something nearer is already there
                 nearest[k] = z;
             }
-            Rgb c;
+            Rgb c = constant_colour;
             if constexpr (NeedsFootprint<Shader>) {
                 c = shader.pixel(varying, step, step_y);  // constant across the triangle
             } else {
-                c = shader.pixel(varying);
+                if (!constant) c = shader.pixel(varying);
             }
             out[0] = c.r;
             out[1] = c.g;

@@ -1,6 +1,8 @@
 // The only file that includes libwebp.
 #include <raster/webp.hpp>
 
+#include "task_pool.hpp"
+
 #include <algorithm>
 #include <deque>
 #include <fstream>
@@ -51,8 +53,8 @@ WebPConfig lossless_config(Effort effort) {
 // little size.
 WebPConfig parallel_config(Effort effort) {
     WebPConfig config = lossless_config(effort);
-    if (effort == Effort::balanced) {
-        config.method = 2;
+    if (effort != Effort::max) {  // method 0 and 1 at quality 50: on the front for fast and default
+        config.method = effort == Effort::fast ? 0 : 1;
         config.quality = 50.0F;
     }
     return config;
@@ -95,14 +97,17 @@ Framebuffer framebuffer_from_rgba(const std::uint8_t* rgba, int width, int heigh
 }
 
 // The lossless bytes of one picture: a whole frame, or the rectangle of it that changed.
-std::vector<std::uint8_t> encode_lossless(const std::uint8_t* rgb, int width, int height, int stride, const WebPConfig& config) {
+// `channels` is 3 for RGB, 4 for RGBA whose transparent pixels show the frame below.
+std::vector<std::uint8_t> encode_lossless(const std::uint8_t* rgb, int width, int height, int stride, const WebPConfig& config,
+                                          int channels = 3) {
     WebPPicture picture;
     if (!WebPPictureInit(&picture)) throw std::runtime_error("libwebp version mismatch");
     picture.use_argb = 1;
     picture.width = width;
     picture.height = height;
     const std::unique_ptr<WebPPicture, void (*)(WebPPicture*)> owned(&picture, WebPPictureFree);
-    if (!WebPPictureImportRGB(&picture, rgb, stride)) throw std::runtime_error("out of memory importing a frame");
+    const int imported = channels == 4 ? WebPPictureImportRGBA(&picture, rgb, stride) : WebPPictureImportRGB(&picture, rgb, stride);
+    if (!imported) throw std::runtime_error("out of memory importing a frame");
     WebPMemoryWriter memory;
     WebPMemoryWriterInit(&memory);
     picture.writer = WebPMemoryWrite;
@@ -143,17 +148,19 @@ Region changed_region(const Framebuffer& before, const Framebuffer& after) {
     const std::uint8_t* a = before.bytes().data();
     const std::uint8_t* b = after.bytes().data();
     int top = h, bottom = -1, left = w, right = -1;
+    const auto same = [](const std::uint8_t* p, const std::uint8_t* q) { return p[0] == q[0] && p[1] == q[1] && p[2] == q[2]; };
     for (int y = 0; y < h; ++y) {
         const std::uint8_t* ra = a + static_cast<std::size_t>(y) * row_bytes;
         const std::uint8_t* rb = b + static_cast<std::size_t>(y) * row_bytes;
         if (std::equal(ra, ra + row_bytes, rb)) continue;
         top = std::min(top, y);
         bottom = y;
+        // Only what would widen the rectangle is looked at: left of it, and right of it.
         int x0 = 0;
-        while (ra[x0 * 3] == rb[x0 * 3] && ra[x0 * 3 + 1] == rb[x0 * 3 + 1] && ra[x0 * 3 + 2] == rb[x0 * 3 + 2]) ++x0;
-        int x1 = w - 1;
-        while (ra[x1 * 3] == rb[x1 * 3] && ra[x1 * 3 + 1] == rb[x1 * 3 + 1] && ra[x1 * 3 + 2] == rb[x1 * 3 + 2]) --x1;
+        while (x0 < left && same(ra + x0 * 3, rb + x0 * 3)) ++x0;
         left = std::min(left, x0);
+        int x1 = w - 1;
+        while (x1 > right && same(ra + x1 * 3, rb + x1 * 3)) --x1;
         right = std::max(right, x1);
     }
     if (bottom < 0) return {};
@@ -164,6 +171,7 @@ Region changed_region(const Framebuffer& before, const Framebuffer& after) {
 struct EncodedFrame {
     std::vector<std::uint8_t> bytes;
     Region region;
+    bool blend;  // drawn over the previous frame, its transparent pixels showing it
 };
 
 }  // namespace
@@ -179,7 +187,9 @@ struct AnimationEncoder::State {
     WebPAnimEncoder* encoder = nullptr;
     // The parallel path: the last frame, the encodes in flight in frame order, and the file so far.
     std::size_t threads = 1;
+    bool try_blending = false;  // Effort::max: each frame both opaque and blended, the smaller kept
     std::optional<Framebuffer> previous;
+    std::unique_ptr<detail::TaskPool<EncodedFrame>> pool;
     std::deque<std::future<EncodedFrame>> in_flight;
     WebPMux* mux = nullptr;
 
@@ -205,6 +215,8 @@ struct AnimationEncoder::State {
             if (settings.tuning) config.method = settings.tuning->method, config.quality = settings.tuning->quality;
             threads = settings.threads > 0 ? static_cast<std::size_t>(settings.threads)
                                            : std::max(1U, std::thread::hardware_concurrency());
+            try_blending = settings.effort == Effort::max;
+            pool = std::make_unique<detail::TaskPool<EncodedFrame>>(threads);
             mux = WebPMuxNew();
             if (mux == nullptr) throw std::runtime_error("cannot start the WebP muxer");
             return;
@@ -220,7 +232,8 @@ struct AnimationEncoder::State {
         if (encoder == nullptr) throw std::runtime_error("cannot start the WebP animation encoder");
     }
     ~State() {
-        in_flight.clear();  // waits for encodes still running
+        pool.reset();  // finishes the encodes still queued, then stops its threads
+        in_flight.clear();
         WebPAnimEncoderDelete(encoder);
         WebPMuxDelete(mux);
     }
@@ -244,18 +257,46 @@ struct AnimationEncoder::State {
     void add_in_parallel(const Framebuffer& frame) {
         const Region region = previous ? changed_region(*previous, frame) : Region{0, 0, width, height};
         // The task gets its own copy of the rectangle, so the caller may reuse the frame at once.
-        std::vector<std::uint8_t> pixels(static_cast<std::size_t>(region.width) * static_cast<std::size_t>(region.height) * 3);
-        const auto row = static_cast<std::size_t>(region.width) * 3;
+        // At the highest effort it also gets the rectangle with the pixels the previous frame
+        // already shows made transparent, to be blended over it, and keeps whichever encodes
+        // smaller: that wins for slow motion, where little of the rectangle changes.
+        const bool try_blend = try_blending && previous.has_value();
+        const std::size_t area = static_cast<std::size_t>(region.width) * static_cast<std::size_t>(region.height);
+        std::vector<std::uint8_t> opaque(area * 3), blended(try_blend ? area * 4 : 0);
+        std::uint8_t* to = opaque.data();
+        std::uint8_t* faded = blended.data();
         for (int y = 0; y < region.height; ++y) {
-            const std::uint8_t* from = frame.bytes().data() + (static_cast<std::size_t>(region.y + y) * static_cast<std::size_t>(width) +
-                                                              static_cast<std::size_t>(region.x)) * 3;
-            std::copy(from, from + row, pixels.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(y) * row));
+            const std::size_t at = (static_cast<std::size_t>(region.y + y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(region.x)) * 3;
+            const std::uint8_t* now = frame.bytes().data() + at;
+            const std::uint8_t* before = try_blend ? previous->bytes().data() + at : nullptr;
+            std::copy(now, now + static_cast<std::size_t>(region.width) * 3, to);
+            to += static_cast<std::size_t>(region.width) * 3;
+            if (!try_blend) continue;
+            for (int x = 0; x < region.width; ++x, now += 3) {
+                const bool unchanged = before[0] == now[0] && before[1] == now[1] && before[2] == now[2];
+                faded[0] = unchanged ? 0 : now[0], faded[1] = unchanged ? 0 : now[1], faded[2] = unchanged ? 0 : now[2];
+                faded[3] = unchanged ? 0 : 255;
+                before += 3, faded += 4;
+            }
         }
-        in_flight.push_back(std::async(std::launch::async, [pixels = std::move(pixels), region, config = config] {
-            return EncodedFrame{encode_lossless(pixels.data(), region.width, region.height, region.width * 3, config), region};
+        in_flight.push_back(pool->submit([opaque = std::move(opaque), blended = std::move(blended), region, config = config] {
+            EncodedFrame best{encode_lossless(opaque.data(), region.width, region.height, region.width * 3, config), region, false};
+            if (!blended.empty()) {
+                WebPConfig see_through = config;
+                see_through.exact = 0;  // what lies under a transparent pixel is never seen
+                std::vector<std::uint8_t> bytes = encode_lossless(blended.data(), region.width, region.height, region.width * 4, see_through, 4);
+                if (bytes.size() < best.bytes.size()) best = {std::move(bytes), region, true};
+            }
+            return best;
         }));
+        const auto row = static_cast<std::size_t>(region.width) * 3;
         if (previous) {
-            std::copy(frame.bytes().begin(), frame.bytes().end(), previous->pixels());
+            // Outside the rectangle the frames agree: only the rectangle needs copying.
+            for (int y = region.y; y < region.y + region.height; ++y) {
+                const std::size_t at = (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(region.x)) * 3;
+                std::copy(frame.bytes().begin() + static_cast<std::ptrdiff_t>(at), frame.bytes().begin() + static_cast<std::ptrdiff_t>(at + row),
+                          previous->pixels() + at);
+            }
         } else {
             previous.emplace(frame);
         }
@@ -273,7 +314,7 @@ struct AnimationEncoder::State {
         info.duration = frame_spacing_ms;
         info.id = WEBP_CHUNK_ANMF;
         info.dispose_method = WEBP_MUX_DISPOSE_NONE;
-        info.blend_method = WEBP_MUX_NO_BLEND;  // the rectangle replaces what was there
+        info.blend_method = encoded.blend ? WEBP_MUX_BLEND : WEBP_MUX_NO_BLEND;  // transparent pixels keep what was there
         if (WebPMuxPushFrame(mux, &info, 1) != WEBP_MUX_OK) throw std::runtime_error("cannot add a frame to the animation");
     }
 

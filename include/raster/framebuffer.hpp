@@ -39,6 +39,8 @@ public:
     // Throws std::out_of_range outside the buffer.
     [[nodiscard]] Rgb pixel(int x, int y) const;
     void clear(Rgb colour) noexcept;
+    // Paints rows [y_begin, y_end) whole, at memcpy speed; rows outside the buffer are skipped.
+    void clear_rows(int y_begin, int y_end, Rgb colour) noexcept;
 
     // Packed R, G, B bytes, row after row with no padding.
     [[nodiscard]] std::span<const std::uint8_t> bytes() const noexcept { return bytes_; }
