@@ -1,6 +1,8 @@
 // colour-lab: ways to encode a linear-light float as an 8-bit sRGB byte, each checked on every
 // float in [0, 1] against the standard's formula in double precision and timed; writes
 // colour.csv and colour-summary.md for doc/lab/ (lab/colour_chart.gp draws colour.svg).
+#include "lab_args.hpp"
+
 #include <raster/colour.hpp>
 
 #include <algorithm>
@@ -11,6 +13,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <fstream>
 #include <functional>
 #include <iostream>
@@ -98,15 +101,9 @@ std::string number(double value, const char* format) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    std::filesystem::path out = "doc/lab";
-    for (int i = 1; i < argc; ++i) {
-        const std::string arg = argv[i];
-        if (arg.rfind("--out=", 0) != 0) {
-            std::cerr << "usage: colour-lab [--out=DIR]\n";
-            return 2;
-        }
-        out = arg.substr(6);
-    }
+    const std::optional<std::filesystem::path> chosen = lab::out_dir(argc, argv, "colour-lab");
+    if (!chosen) return 2;
+    const std::filesystem::path out = *chosen;
     const Table table;
     const Bisection bisection;
     std::vector<Method> methods{

@@ -2,6 +2,8 @@
 // encoded. Every path, effort and thread count, and the parallel path's method and quality,
 // timed against the file size; each file decoded and checked against the frames.
 // Writes encode.csv and encode-summary.md; lab/encode_chart.gp draws encode.svg.
+#include "lab_args.hpp"
+
 #include <raster/scenes.hpp>
 #include <raster/webp.hpp>
 
@@ -22,11 +24,6 @@ struct Config {
     std::vector<double> seconds{};
     std::size_t bytes = 0;
 };
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    return values[values.size() / 2];
-}
 
 std::vector<Config> configs() {
     using raster::AnimationPath;
@@ -105,10 +102,10 @@ int main(int argc, char** argv) {
     std::ofstream summary(out / "encode-summary.md");
     summary << "| configuration | seconds (median, min-max of " << repetitions << "; max effort: one run) | bytes | Pareto |\n|---|---|---|---|\n";
     for (const Config& c : all) {
-        const double t = median(c.seconds);
+        const double t = lab::median(c.seconds);
         bool dominated = false;
         for (const Config& o : all) {
-            const double u = median(o.seconds);
+            const double u = lab::median(o.seconds);
             if (&o != &c && u <= t && o.bytes <= c.bytes && (u < t || o.bytes < c.bytes)) dominated = true;
         }
         const auto [low, high] = std::minmax_element(c.seconds.begin(), c.seconds.end());

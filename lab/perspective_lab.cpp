@@ -4,6 +4,8 @@
 //  2. Clipping: all six planes against near and far with a guard band: pixel equality and time.
 //  3. Depth: which encodings of depth keep two close surfaces in order as far / near grows.
 // Writes perspective-*.csv and perspective-summary.md; lab/perspective_charts.gp draws the charts.
+#include "lab_args.hpp"
+
 #include "clipped_facets.hpp"
 #include "recording_shader.hpp"
 
@@ -16,6 +18,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <fstream>
 #include <iostream>
 #include <numbers>
@@ -31,11 +34,6 @@ std::string number(double v, const char* format) {
     char text[64];
     std::snprintf(text, sizeof text, format, v);
     return text;
-}
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    return values[values.size() / 2];
 }
 
 // A floor at y = -1 from z = 0.5 to 40 and x = -20 to 20, split into n x n cells, seen from the
@@ -138,7 +136,7 @@ InterpolationRow measure_interpolation(bool perspective, int cells, double degre
         draw(Checkerboard{});
         times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
     }
-    row.ms = median(times);
+    row.ms = lab::median(times);
     return row;
 }
 
@@ -177,7 +175,7 @@ ClippingRow measure_clipping(std::string_view name, int fov) {
     for (int j = 0; j < kHeight; ++j) {
         for (int i = 0; i < kWidth; ++i) differing += six.pixel(i, j) != guard.pixel(i, j) ? 1 : 0;
     }
-    return {std::string(name), fov, differing, median(six_ms), median(guard_ms)};
+    return {std::string(name), fov, differing, lab::median(six_ms), lab::median(guard_ms)};
 }
 
 // Two floors 1e-5 apart seen from 1 above the nearer, looking 10 degrees down: at each pixel the
@@ -238,15 +236,9 @@ std::vector<DepthRow> measure_depth() {
 }  // namespace
 
 int main(int argc, char** argv) {
-    std::filesystem::path out = "doc/lab";
-    for (int i = 1; i < argc; ++i) {
-        const std::string arg = argv[i];
-        if (arg.rfind("--out=", 0) != 0) {
-            std::cerr << "usage: perspective-lab [--out=DIR]\n";
-            return 2;
-        }
-        out = arg.substr(6);
-    }
+    const std::optional<std::filesystem::path> chosen = lab::out_dir(argc, argv, "perspective-lab");
+    if (!chosen) return 2;
+    const std::filesystem::path out = *chosen;
     std::filesystem::create_directories(out);
 
     std::cerr << "perspective-lab: interpolation\n";

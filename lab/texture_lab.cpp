@@ -1,6 +1,8 @@
 // texture-lab: texture filters on a checkerboard floor receding to the horizon, each against a
 // heavily supersampled ray-cast reference (aliasing error per image band) and timed.
 // Writes texture-filtering.csv and texture-summary.md; lab/texture_chart.gp draws the chart.
+#include "lab_args.hpp"
+
 #include "clipped_facets.hpp"
 
 #include <raster/texture.hpp>
@@ -11,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <fstream>
 #include <iostream>
 #include <string>
@@ -25,11 +28,6 @@ constexpr float kFar = 2000.0F;
 constexpr int kSquareTexels = 32;  // texels per checker square; the texture holds 2 x 2 squares
 
 const raster::LinearRgb kLight{0.85F, 0.75F, 0.2F}, kDark{0.02F, 0.05F, 0.3F};
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    return values[values.size() / 2];
-}
 
 // One checker square per world unit: texture coordinates are world x and z over 2.
 raster::Mesh floor_mesh() {
@@ -104,7 +102,7 @@ Row measure(const std::string& name, raster::TextureFilter filter, const raster:
         raster::detail::draw_facets_in_perspective(frame, nullptr, camera(), mesh, shader);
         times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
     }
-    Row row{name, std::vector<double>(kBands, 0.0), 0.0, median(times)};
+    Row row{name, std::vector<double>(kBands, 0.0), 0.0, lab::median(times)};
     std::vector<double> counts(kBands, 0.0);
     double total = 0.0;
     for (int y = 0; y < kHeight; ++y) {
@@ -124,15 +122,9 @@ Row measure(const std::string& name, raster::TextureFilter filter, const raster:
 }  // namespace
 
 int main(int argc, char** argv) {
-    std::filesystem::path out = "doc/lab";
-    for (int i = 1; i < argc; ++i) {
-        const std::string arg = argv[i];
-        if (arg.rfind("--out=", 0) != 0) {
-            std::cerr << "usage: texture-lab [--out=DIR]\n";
-            return 2;
-        }
-        out = arg.substr(6);
-    }
+    const std::optional<std::filesystem::path> chosen = lab::out_dir(argc, argv, "texture-lab");
+    if (!chosen) return 2;
+    const std::filesystem::path out = *chosen;
     std::filesystem::create_directories(out);
     std::cerr << "texture-lab: reference (" << kSamples * kSamples << " rays a pixel)\n";
     const raster::Framebuffer truth = reference();
