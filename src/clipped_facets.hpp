@@ -11,11 +11,13 @@
 // cull, then fill with attributes interpolated through 1/w.
 namespace raster::detail {
 
-// `band`: how far beyond the image's edges x and y are clipped, in pixels (the lab compares).
-template <typename Shader, Interpolation kMode = Interpolation::perspective>
-std::size_t draw_facets_in_perspective(Framebuffer& colour, DepthBuffer* depth_buffer, const PerspectiveCamera& camera,
-                                       const Mesh& mesh, const Shader& shader, double band = kGuardBandPixels,
-                                       std::optional<PixelRect> rows = std::nullopt) {
+// `visit(corners)` gets every triangle that faces the camera after clipping, in facet order
+// (a clipped facet as a fan of pieces); `band`: how far beyond the image's edges x and y are
+// clipped, in pixels (the lab compares). Returns the facets with any piece visited.
+template <typename Shader, typename Visit>
+std::size_t facing_triangles_in_perspective(const Framebuffer& colour, const DepthBuffer* depth_buffer,
+                                            const PerspectiveCamera& camera, const Mesh& mesh, const Shader& shader,
+                                            double band, Visit visit) {
     using Varying = typename Shader::Varying;
     check_drawable(colour, depth_buffer, mesh);
     if (camera.width() != colour.width() || camera.height() != colour.height()) {
@@ -23,28 +25,27 @@ std::size_t draw_facets_in_perspective(Framebuffer& colour, DepthBuffer* depth_b
     }
     const ClipPlanes frustum(colour.width(), colour.height(), band);
     std::vector<glm::dvec4> clip;
+    std::vector<std::optional<SubpixelPoint>> snapped;  // a vertex inside every plane, on screen; else nothing
     clip.reserve(mesh.positions.size());
-    for (const glm::vec3& position : mesh.positions) clip.push_back(camera.clip_from_world(position));
+    snapped.reserve(mesh.positions.size());
+    for (const glm::vec3& position : mesh.positions) {
+        clip.push_back(camera.clip_from_world(position));
+        snapped.push_back(frustum.inside_all(clip.back()) ? snap_to_subpixel(camera.screen_from_clip(clip.back())) : std::nullopt);
+    }
     const std::vector<Varying> varyings = vertex_varyings(shader, mesh);
     std::size_t drawn = 0;
     for (const Facet& facet : mesh.facets) {
         const std::array<glm::dvec4, 3> at{clip[facet.corners[0]], clip[facet.corners[1]], clip[facet.corners[2]]};
-        if (frustum.inside_all(at[0]) && frustum.inside_all(at[1]) && frustum.inside_all(at[2])) {
+        if (snapped[facet.corners[0]] && snapped[facet.corners[1]] && snapped[facet.corners[2]]) {
             // Most facets need no clipping: cull them before any shading work.
             std::array<ShadedCorner<Varying>, 3> corners{};
-            bool usable = true;
-            for (std::size_t k = 0; k < 3 && usable; ++k) {
-                const std::optional<SubpixelPoint> point = snap_to_subpixel(camera.screen_from_clip(at[k]));
-                usable = point.has_value();
-                if (usable) corners[k].at = *point, corners[k].depth = static_cast<float>(at[k].w);
-            }
+            for (std::size_t k = 0; k < 3; ++k) corners[k].at = *snapped[facet.corners[k]], corners[k].depth = static_cast<float>(at[k].w);
             const std::array<SubpixelPoint, 3> points{corners[0].at, corners[1].at, corners[2].at};
-            if (!usable || twice_signed_area(points) <= 0) continue;  // facing away or edge-on
+            if (twice_signed_area(points) <= 0) continue;  // facing away or edge-on
             ++drawn;
-            if (misses_rows(points, rows)) continue;  // another band's
             const std::array<Varying, 3> values = facet_varyings(shader, mesh, facet, varyings);
             for (std::size_t k = 0; k < 3; ++k) corners[k].varying = values[k];
-            shade_triangle<Shader, FloatDepth, kMode>(colour, depth_buffer, corners, shader, {}, rows);
+            visit(corners);
             continue;
         }
         const std::array<Varying, 3> values = facet_varyings(shader, mesh, facet, varyings);
@@ -68,12 +69,23 @@ std::size_t draw_facets_in_perspective(Framebuffer& colour, DepthBuffer* depth_b
             const std::array<SubpixelPoint, 3> points{piece[0].at, piece[1].at, piece[2].at};
             if (twice_signed_area(points) <= 0) continue;  // facing away or edge-on
             any = true;
-            if (misses_rows(points, rows)) continue;  // another band's
-            shade_triangle<Shader, FloatDepth, kMode>(colour, depth_buffer, piece, shader, {}, rows);
+            visit(piece);
         }
         drawn += any ? 1 : 0;
     }
     return drawn;
+}
+
+// Draws every triangle facing a perspective camera, into `rows` only when given.
+template <typename Shader, Interpolation kMode = Interpolation::perspective>
+std::size_t draw_facets_in_perspective(Framebuffer& colour, DepthBuffer* depth_buffer, const PerspectiveCamera& camera,
+                                       const Mesh& mesh, const Shader& shader, double band = kGuardBandPixels,
+                                       std::optional<PixelRect> rows = std::nullopt) {
+    const PixelRect target = rows.value_or(PixelRect{0, 0, colour.width(), colour.height()});
+    return facing_triangles_in_perspective(colour, depth_buffer, camera, mesh, shader, band, [&](const auto& corners) {
+        if (misses_rows({corners[0].at, corners[1].at, corners[2].at}, target)) return;  // another band's
+        shade_triangle<Shader, FloatDepth, kMode>(colour, depth_buffer, corners, shader, {}, target);
+    });
 }
 
 }  // namespace raster::detail

@@ -64,7 +64,7 @@ std::int64_t twice_signed_area(std::span<const SubpixelPoint> corners) noexcept 
     std::int64_t sum = 0;
     for (std::size_t i = 0; i < corners.size(); ++i) {
         const SubpixelPoint a = corners[i];
-        const SubpixelPoint b = corners[(i + 1) % corners.size()];
+        const SubpixelPoint b = corners[i + 1 == corners.size() ? 0 : i + 1];  // no division in the loop
         sum += std::int64_t{a.x} * b.y - std::int64_t{b.x} * a.y;
     }
     return sum;
@@ -95,7 +95,7 @@ std::int64_t rasterize_convex(std::span<const SubpixelPoint> corners, PixelRect 
     std::size_t edge_count = 0;
     for (std::size_t i = 0; i < count; ++i) {
         SubpixelPoint a = corners[i];
-        SubpixelPoint b = corners[(i + 1) % count];
+        SubpixelPoint b = corners[i + 1 == count ? 0 : i + 1];
         if (a == b) continue;  // a repeated corner bounds nothing: the polygon is the one without it
         if (area < 0) std::swap(a, b);  // walk every polygon in the same rotational sense
         edges[edge_count++] = EdgeFunction::through(a, b);

@@ -24,7 +24,9 @@ Facet facet_facing_away(const std::vector<glm::vec3>& positions, std::uint32_t a
     return facet;
 }
 
-Mesh posed(const Mesh& mesh, const glm::mat4& model) {
+Mesh posed(const Mesh& mesh, const glm::mat4& model) { return posed(mesh, model, PoseParts{}); }
+
+Mesh posed(const Mesh& mesh, const glm::mat4& model, PoseParts parts) {
     const glm::mat3 linear(model);
     const glm::mat3 normal_matrix = glm::transpose(glm::inverse(linear));
     Mesh result;
@@ -33,14 +35,18 @@ Mesh posed(const Mesh& mesh, const glm::mat4& model) {
     result.positions.reserve(mesh.positions.size());
     for (const glm::vec3& p : mesh.positions) result.positions.push_back(glm::vec3(model * glm::vec4(p, 1.0F)));
     result.uvs = mesh.uvs;
-    result.normals.reserve(mesh.normals.size());
-    for (const glm::vec3& n : mesh.normals) result.normals.push_back(unit_or_zero(normal_matrix * n));
+    if (parts.vertex_normals) {
+        result.normals.reserve(mesh.normals.size());
+        for (const glm::vec3& n : mesh.normals) result.normals.push_back(unit_or_zero(normal_matrix * n));
+    } else {
+        result.normals.resize(mesh.normals.size());
+    }
     // A mirror turns clockwise into counter-clockwise: swap two corners to keep the convention.
     const bool mirrored = glm::determinant(linear) < 0.0F;
     result.facets.reserve(mesh.facets.size());
     for (Facet facet : mesh.facets) {
         if (mirrored) std::swap(facet.corners[1], facet.corners[2]);
-        facet.normal = unit_or_zero(normal_matrix * facet.normal);
+        facet.normal = parts.facet_normals ? unit_or_zero(normal_matrix * facet.normal) : glm::vec3(0.0F);
         result.facets.push_back(facet);
     }
     return result;

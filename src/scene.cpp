@@ -4,10 +4,11 @@
 #include <raster/textured_shaders.hpp>
 
 #include "clipped_facets.hpp"
+#include "strip_bins.hpp"
 
 #include <algorithm>
-#include <exception>
 #include <thread>
+#include <type_traits>
 #include <vector>
 #include <cmath>
 #include <numbers>
@@ -73,70 +74,69 @@ int thread_count(int asked, int height) {
 }
 
 // Clears to the background, prepares depth only when the scene needs it, and draws every posed
-// object through `draw_mesh_with(depth or nullptr, rows, mesh, shader)`: on one thread, or on
-// several, each clearing and drawing its own band of rows in the same object and facet order.
-template <typename Camera, typename DrawMesh>
+// object in strips of rows: `gather(depth or nullptr, mesh, shader, visit)` hands each triangle
+// facing the camera to `visit`, and the strips are cleared (on the first object's pass) and
+// drawn on `options.threads` threads.
+template <detail::Interpolation kMode, typename Camera, typename Gather>
 std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& scene, DepthBuffer& depth,
-                           std::optional<glm::vec3> eye, RenderOptions options, DrawMesh draw_mesh_with) {
+                           std::optional<glm::vec3> eye, RenderOptions options, Gather gather) {
     const int threads = thread_count(options.threads, framebuffer.height());
     const bool depth_test = needs_depth(scene);
-    if (depth_test) depth.resize(framebuffer.width(), framebuffer.height());  // each band clears its own rows
+    if (depth_test) depth.resize(framebuffer.width(), framebuffer.height());  // each strip clears its own rows
     DepthBuffer* const tested = depth_test ? &depth : nullptr;
     const glm::vec3 to_eye = -scene.camera.direction();
-    std::vector<Mesh> meshes;  // posed once, drawn by every band
-    for (const SceneObject& object : scene.objects) meshes.push_back(object.mesh ? posed(*object.mesh, object.model) : Mesh{});
-    const auto draw_band = [&](std::optional<PixelRect> rows) {
-        const int top = rows ? rows->y : 0, bottom = rows ? rows->y + rows->height : framebuffer.height();
-        framebuffer.clear_rows(top, bottom, scene.background);
-        if (tested != nullptr) tested->clear_rows(top, bottom);
-        std::size_t drawn = 0;
-        for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-            if (!scene.objects[i].mesh) continue;  // an object without a mesh shows nothing
-            drawn += draw_shaded(scene.objects[i], scene.lights, scene.point_lights, to_eye, eye, scene.darkening,
-                                 [&](const auto& shader) { return draw_mesh_with(tested, rows, meshes[i], shader); });
-        }
-        return drawn;
+    const int width = framebuffer.width(), rows = detail::strip_rows(width);
+    bool cleared = false;
+    const auto clear = [&](const PixelRect& strip) {
+        framebuffer.clear_rows(strip.y, strip.y + strip.height, scene.background);
+        if (tested != nullptr) tested->clear_rows(strip.y, strip.y + strip.height);
     };
-    if (threads == 1) return draw_band(std::nullopt);
-    // Bands of whole rows, as even as the height allows; every band counts the same facets.
-    std::vector<std::size_t> drawn(static_cast<std::size_t>(threads));
-    std::vector<std::exception_ptr> failures(static_cast<std::size_t>(threads));
-    {
-        std::vector<std::jthread> workers;
-        for (int t = 0; t < threads; ++t) {
-            const int top = framebuffer.height() * t / threads, bottom = framebuffer.height() * (t + 1) / threads;
-            workers.emplace_back([&, t, top, bottom] {
-                try {
-                    drawn[static_cast<std::size_t>(t)] = draw_band(PixelRect{0, top, framebuffer.width(), bottom - top});
-                } catch (...) {
-                    failures[static_cast<std::size_t>(t)] = std::current_exception();
-                }
+    std::size_t drawn = 0;
+    for (const SceneObject& object : scene.objects) {
+        if (!object.mesh) continue;  // an object without a mesh shows nothing
+        drawn += draw_shaded(object, scene.lights, scene.point_lights, to_eye, eye, scene.darkening, [&](const auto& shader) {
+            using Shader = std::remove_cvref_t<decltype(shader)>;
+            const bool per_facet = Shader::kFacetNormal || object.mesh->surface == Surface::faceted;
+            const Mesh mesh = posed(*object.mesh, object.model, {.vertex_normals = !per_facet, .facet_normals = per_facet});
+            detail::StripBins<typename Shader::Varying> bins(framebuffer.height(), rows);
+            bins.reserve(mesh.facets.size());
+            const std::size_t facets = gather(tested, mesh, shader, [&](const auto& corners) { bins.add(corners); });
+            bins.finish();
+            detail::for_each_strip(bins.strips(), threads, [&](int s) {
+                const PixelRect strip = bins.strip(s, width);
+                if (!cleared) clear(strip);
+                bins.for_each_in(s, [&](const auto& corners) {
+                    detail::shade_triangle<Shader, detail::FloatDepth, kMode>(framebuffer, tested, corners, shader, {}, strip);
+                });
             });
-        }
+            cleared = true;
+            return facets;
+        });
     }
-    for (const std::exception_ptr& failure : failures) {
-        if (failure) std::rethrow_exception(failure);
+    if (!cleared) {
+        const detail::StripBins<float> empty(framebuffer.height(), rows);
+        detail::for_each_strip(empty.strips(), threads, [&](int s) { clear(empty.strip(s, width)); });
     }
-    return drawn.front();
+    return drawn;
 }
 
 }  // namespace
 
 std::size_t render(Framebuffer& framebuffer, const Scene& scene, DepthBuffer& depth, RenderOptions options) {
-    // Orthographic: the direction toward the viewer is the same at every pixel.
-    return render_objects(framebuffer, scene, depth, std::nullopt, options,
-                          [&](DepthBuffer* tested, std::optional<PixelRect> rows, const Mesh& mesh, const auto& shader) {
-                              return draw_mesh({framebuffer, tested, rows}, scene.camera, mesh, shader);
-                          });
+    // Orthographic: attributes are linear on screen, and the direction toward the viewer is the same at every pixel.
+    return render_objects<detail::Interpolation::screen_linear>(
+        framebuffer, scene, depth, std::nullopt, options, [&](DepthBuffer* tested, const Mesh& mesh, const auto& shader, auto visit) {
+            return detail::facing_triangles(framebuffer, tested, scene.camera, mesh, shader, visit);
+        });
 }
 
 std::size_t render(Framebuffer& framebuffer, const PerspectiveScene& scene, DepthBuffer& depth, RenderOptions options) {
     // Phase 2 takes the direction toward the eye at every point.
-    return render_objects(framebuffer, scene, depth, scene.camera.eye(), options,
-                          [&](DepthBuffer* tested, std::optional<PixelRect> rows, const Mesh& mesh, const auto& shader) {
-                              return detail::draw_facets_in_perspective(framebuffer, tested, scene.camera, mesh, shader,
-                                                                        detail::kGuardBandPixels, rows);
-                          });
+    return render_objects<detail::Interpolation::perspective>(
+        framebuffer, scene, depth, scene.camera.eye(), options, [&](DepthBuffer* tested, const Mesh& mesh, const auto& shader, auto visit) {
+            return detail::facing_triangles_in_perspective(framebuffer, tested, scene.camera, mesh, shader,
+                                                           detail::kGuardBandPixels, visit);
+        });
 }
 
 PerspectiveScene in_perspective(const Scene& scene, int width, int height, double fov_degrees) {

@@ -231,11 +231,10 @@ std::vector<typename Shader::Varying> vertex_varyings(const Shader& shader, cons
 
 // Whether a triangle's corners leave every pixel centre of a band of rows above or below them,
 // so that a banded render can skip it before any shading work.
-inline bool misses_rows(const std::array<SubpixelPoint, 3>& points, const std::optional<PixelRect>& rows) noexcept {
-    if (!rows) return false;
+inline bool misses_rows(const std::array<SubpixelPoint, 3>& points, const PixelRect& rows) noexcept {
     const std::int32_t low = std::min({points[0].y, points[1].y, points[2].y});
     const std::int32_t high = std::max({points[0].y, points[1].y, points[2].y});
-    return high < rows->y * kSubpixelOne || low > (rows->y + rows->height - 1) * kSubpixelOne;
+    return high < rows.y * kSubpixelOne || low > (rows.y + rows.height - 1) * kSubpixelOne;
 }
 
 struct ScreenVertex {
@@ -243,11 +242,12 @@ struct ScreenVertex {
     float depth;
 };
 
-// The vertex stage: every position projected once, every corner's Varying made once per vertex
-// or, for facet normals, once per facet.
-template <typename Shader, typename DepthFormat = FloatDepth>
-std::size_t draw_facets(Framebuffer& colour, DepthBuffer* depth_buffer, const OrthoCamera& camera, const Mesh& mesh,
-                        const Shader& shader, DepthFormat stored = {}, std::optional<PixelRect> rows = std::nullopt) {
+// The vertex stage of an orthographic view: every position projected once, every corner's
+// Varying made once per vertex or, for facet normals, once per facet; `visit(corners)` gets each
+// facet that faces the camera, in facet order. Returns the facets visited.
+template <typename Shader, typename Visit>
+std::size_t facing_triangles(const Framebuffer& colour, const DepthBuffer* depth_buffer, const OrthoCamera& camera,
+                             const Mesh& mesh, const Shader& shader, Visit visit) {
     using Varying = typename Shader::Varying;
     check_drawable(colour, depth_buffer, mesh);
     std::vector<ScreenVertex> screen;
@@ -273,12 +273,22 @@ std::size_t draw_facets(Framebuffer& colour, DepthBuffer* depth_buffer, const Or
         const std::array<SubpixelPoint, 3> points{corners[0].at, corners[1].at, corners[2].at};
         if (twice_signed_area(points) <= 0) continue;  // facing away, or seen edge-on
         ++drawn;
-        if (misses_rows(points, rows)) continue;  // another band's
         const std::array<Varying, 3> values = facet_varyings(shader, mesh, facet, varyings);
         for (std::size_t k = 0; k < 3; ++k) corners[k].varying = values[k];
-        shade_triangle(colour, depth_buffer, corners, shader, stored, rows);
+        visit(corners);
     }
     return drawn;
+}
+
+// Draws every facet facing an orthographic camera, into `rows` only when given.
+template <typename Shader, typename DepthFormat = FloatDepth>
+std::size_t draw_facets(Framebuffer& colour, DepthBuffer* depth_buffer, const OrthoCamera& camera, const Mesh& mesh,
+                        const Shader& shader, DepthFormat stored = {}, std::optional<PixelRect> rows = std::nullopt) {
+    const PixelRect target = rows.value_or(PixelRect{0, 0, colour.width(), colour.height()});
+    return facing_triangles(colour, depth_buffer, camera, mesh, shader, [&](const auto& corners) {
+        if (misses_rows({corners[0].at, corners[1].at, corners[2].at}, target)) return;  // another band's
+        shade_triangle(colour, depth_buffer, corners, shader, stored, target);
+    });
 }
 
 }  // namespace raster::detail

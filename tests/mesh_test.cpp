@@ -61,6 +61,24 @@ TEST(PosedMesh, SingularAndNonFiniteModelsGiveZeroNormalsNotNaN) {
     }
 }
 
+TEST(PosedMesh, PartsLeftOutAreZeroAndTheRestMatchAFullPose) {
+    const raster::Mesh sphere = raster::sphere(2);
+    const glm::mat4 model = glm::rotate(glm::scale(glm::mat4(1.0F), glm::vec3(2.0F, 1.0F, 0.5F)), 0.7F, glm::vec3(1, 2, 3));
+    const raster::Mesh full = raster::posed(sphere, model);
+    const raster::Mesh smooth = raster::posed(sphere, model, {.vertex_normals = true, .facet_normals = false});
+    const raster::Mesh flat = raster::posed(sphere, model, {.vertex_normals = false, .facet_normals = true});
+    EXPECT_EQ(smooth.positions, full.positions);
+    EXPECT_EQ(smooth.normals, full.normals);
+    EXPECT_EQ(flat.positions, full.positions);
+    ASSERT_EQ(flat.normals.size(), full.normals.size());
+    for (std::size_t i = 0; i < full.facets.size(); ++i) {
+        EXPECT_EQ(flat.facets[i].corners, full.facets[i].corners);
+        EXPECT_EQ(flat.facets[i].normal, full.facets[i].normal);
+        EXPECT_EQ(smooth.facets[i].normal, glm::vec3(0.0F));
+    }
+    for (const glm::vec3& normal : flat.normals) EXPECT_EQ(normal, glm::vec3(0.0F));
+}
+
 TEST(FacetNormal, DegenerateCornersHaveNoNormal) {
     const float nan = std::numeric_limits<float>::quiet_NaN();
     EXPECT_EQ(raster::facet_normal({0, 0, 0}, {1, 1, 1}, {2, 2, 2}), glm::vec3(0.0F));

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 #include <glm/geometric.hpp>
+#include <optional>
 #include <gtest/gtest.h>
 #include <limits>
 #include <stdexcept>
@@ -51,6 +52,25 @@ TEST(OrthoCamera, LooksAlongPositiveZ) {
 TEST(OrthoCamera, SnapsToTheNearestSubpixelWithHalvesUp) {
     EXPECT_EQ(raster::snap_to_subpixel({2.5, 1.0 / 512}), (raster::SubpixelPoint{640, 1}));
     EXPECT_EQ(raster::snap_to_subpixel({-1.0 / 512, -3.0 / 512}), (raster::SubpixelPoint{0, -1}));
+}
+
+// The snap takes its floor by truncation; it must agree with std::floor everywhere in range.
+TEST(OrthoCamera, SnapsLikeStdFloorOnEitherSideOfZeroAndAtTheLimit) {
+    const double limit = raster::kMaxSubpixelCoordinate;
+    for (const double screen : {0.0, -0.0, 1.0 / 512, -1.0 / 512, -1.0 / 256, -3.0 / 512, 7.75, -7.75, -7.998046875,
+                                limit - 1.0 / 512, -limit + 1.0 / 1024, limit, -limit, limit + 1.0 / 1024, -limit - 1.0 / 256}) {
+        const double expected = std::floor(screen * raster::kSubpixelOne + 0.5);
+        const std::optional<raster::SubpixelPoint> snapped = raster::snap_to_subpixel({screen, -screen});
+        const double expected_y = std::floor(-screen * raster::kSubpixelOne + 0.5);
+        const double most = limit * raster::kSubpixelOne;
+        if (std::abs(expected) <= most && std::abs(expected_y) <= most) {
+            ASSERT_TRUE(snapped.has_value()) << screen;
+            EXPECT_EQ(snapped->x, expected) << screen;
+            EXPECT_EQ(snapped->y, expected_y) << screen;
+        } else {
+            EXPECT_FALSE(snapped.has_value()) << screen;
+        }
+    }
 }
 
 TEST(OrthoCamera, PixelsRoundHalvesTowardPositiveXAndY) {

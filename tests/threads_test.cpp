@@ -5,12 +5,16 @@
 #include <raster/obj_file.hpp>
 #include <raster/scenes.hpp>
 #include <raster/seed_scenes.hpp>
+#include <raster/shapes.hpp>
 #include <raster/webp.hpp>
+
+#include "clipped_facets.hpp"
 
 #include "support/model_files.hpp"
 #include "support/scratch.hpp"
 
 #include <gtest/gtest.h>
+#include <glm/gtc/matrix_transform.hpp>
 
 using raster::Framebuffer;
 
@@ -19,8 +23,8 @@ namespace {
 constexpr int kWidth = 161, kHeight = 97;  // odd sizes: bands of unequal height
 
 template <typename Scene>
-Framebuffer rendered(const Scene& scene, int threads) {
-    Framebuffer image(kWidth, kHeight);
+Framebuffer rendered(const Scene& scene, int threads, int width = kWidth, int height = kHeight) {
+    Framebuffer image(width, height);
     raster::DepthBuffer depth;
     raster::render(image, scene, depth, {threads});
     return image;
@@ -44,6 +48,35 @@ TEST(Threads, EveryThreadCountDrawsTheSamePicture) {
         const Framebuffer one = rendered(scene, 1);
         for (const int threads : {2, 5}) EXPECT_EQ(rendered(scene, threads), one) << info.name << " on " << threads << " threads";
     }
+}
+
+// A tall image is drawn in many strips of rows: together they draw what one pass of every
+// triangle over the whole image draws, for triangles across strip edges and those clipped by
+// the near plane too.
+TEST(Threads, StripsTogetherDrawWhatOnePassOverTheWholeImageDraws) {
+    constexpr int width = 90, height = 700;  // strips of 64 rows: eleven, the last short
+    const raster::PerspectiveCamera camera =
+        raster::PerspectiveCamera::look_at(width, height, {0.2F, 0.5F, -0.9F}, glm::vec3(0.0F), {0, 1, 0}, {70.0, 0.2, 10.0});
+    const raster::Material material{{200, 120, 40}, 0.2F, 0.8F, std::nullopt};
+    const std::vector<raster::DirectionalLight> lights{{glm::normalize(glm::vec3(1, 1, -1)), 1.0F}};
+    const raster::Mesh torus = raster::torus(48, 32);
+    const glm::mat4 model = glm::rotate(glm::mat4(1.0F), 0.6F, glm::vec3(1, 0, 0));
+    raster::PerspectiveScene scene{camera, {10, 20, 30}, lights, {}, {}};
+    scene.objects.push_back({std::make_shared<const raster::Mesh>(torus), model, material, raster::ShadingMethod::flat});
+
+    Framebuffer whole(width, height);
+    whole.clear(scene.background);
+    raster::DepthBuffer whole_depth;
+    whole_depth.prepare(width, height);
+    const raster::Lighting lighting(material, lights, -camera.direction());
+    const raster::Mesh mesh = raster::posed(torus, model);
+    raster::detail::draw_facets_in_perspective(whole, &whole_depth, camera, mesh, raster::FlatShader{&lighting});
+    int drawn = 0;
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) drawn += whole.pixel(x, y) == scene.background ? 0 : 1;
+    }
+    ASSERT_GT(drawn, width * height / 4);  // the torus fills much of the image, near plane cutting it
+    for (const int threads : {1, 3}) EXPECT_EQ(rendered(scene, threads, width, height), whole) << threads << " threads";
 }
 
 TEST(Threads, ARenderReturnsTheSameFacetCountAndRefusesANegativeCount) {

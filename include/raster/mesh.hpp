@@ -58,4 +58,12 @@ struct Mesh {
 // A mirroring model (negative determinant) keeps facets clockwise from outside.
 [[nodiscard]] Mesh posed(const Mesh& mesh, const glm::mat4& model);
 
+// Which normals posed() moves: a shader lit per facet never reads the vertex normals, a smooth
+// one never the facet normals, and a render skips the one it does not need (left zero).
+struct PoseParts {
+    bool vertex_normals = true;
+    bool facet_normals = true;
+};
+[[nodiscard]] Mesh posed(const Mesh& mesh, const glm::mat4& model, PoseParts parts);
+
 }  // namespace raster
