@@ -3,16 +3,23 @@
 // the runs and set LP_NUM_THREADS for each. Prints one CSV line:
 //   side,case,width,height,facets,threads,frames,seconds,fps,agreement
 // The torus tumbles as in the diary, flat-shaded by one directional light, depth-tested and
-// culled; the cube tumbles unlit with no depth test. Both sides get the same matrices: GL's
-// projection is raster's with its depth mapped to -1..1 (doc/conventions.md#perspective).
+// culled; the cube tumbles unlit with no depth test; `ptah` is the seed scene of that name, a
+// textured knot lit per pixel, which GL draws with a GLSL program doing the same sums. Both sides
+// get the same matrices: GL's projection is raster's with its depth mapped to -1..1
+// (doc/conventions.md#perspective).
 #include <raster/perspective_camera.hpp>
 #include <raster/scene.hpp>
+#include <raster/seed_scenes.hpp>
+#include <raster/webp.hpp>
 #include <raster/shapes.hpp>
 
 #include "clipped_facets.hpp"
 
 #include <CLI/CLI.hpp>
+#define GL_GLEXT_PROTOTYPES 1  // OSMesa exports the GL 2 entry points the GLSL path calls
 #include <GL/osmesa.h>
+#include <GL/gl.h>
+#include <GL/glext.h>
 
 #include <chrono>
 #include <cmath>
@@ -28,7 +35,7 @@
 namespace {
 
 struct Case {
-    std::string name;  // torus-D (torus(24 D, 16 D)) or cube
+    std::string name;  // torus-D (torus(24 D, 16 D)), cube or ptah
     int width;
     int height;
 };
@@ -39,6 +46,7 @@ const glm::vec3 kLight = glm::normalize(glm::vec3(1.0F, 1.0F, -1.0F));
 
 raster::Mesh mesh_for(const std::string& name) {
     if (name == "cube") return raster::cube_mesh();
+    if (name == "ptah") return *raster::SeedScene("ptah").still(2, 2).objects.front().mesh;
     const int detail = std::stoi(name.substr(6));
     return raster::torus(24 * detail, 16 * detail);
 }
@@ -125,6 +133,13 @@ public:
     ~GlContext() { OSMesaDestroyContext(context_); }
     GlContext(const GlContext&) = delete;
     GlContext& operator=(const GlContext&) = delete;
+    [[nodiscard]] raster::Framebuffer image() const {
+        raster::Framebuffer out(width_, height_);
+        for (int y = 0; y < height_; ++y) {
+            for (int x = 0; x < width_; ++x) out.set_pixel(x, y, pixel(x, y));
+        }
+        return out;
+    }
     [[nodiscard]] raster::Rgb pixel(int x, int y) const {
         const std::size_t i = (static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)) * 4;
         return {pixels_[i], pixels_[i + 1], pixels_[i + 2]};
@@ -185,6 +200,132 @@ void gl_frame(const Case& c, const raster::Mesh& mesh, const std::vector<std::ui
     glFinish();  // the pixels are in memory when this returns: OSMesa renders into our buffer
 }
 
+
+// The seed scene `ptah` in GLSL: world-space normals and the light as raster lights them, the
+// texture's own sRGB mip chain filtered trilinearly in linear light, sRGB written out.
+class GlTexturedScene {
+public:
+    explicit GlTexturedScene(const raster::PerspectiveScene& scene) : object_(scene.objects.front()) {
+        const raster::Mesh& mesh = *object_.mesh;
+        program_ = glCreateProgram();
+        attach(GL_VERTEX_SHADER, R"(#version 120
+uniform mat4 clip_from_world;
+uniform mat4 world_from_model;
+uniform mat3 normal_matrix;
+attribute vec3 position;
+attribute vec3 normal;
+attribute vec2 uv;
+varying vec3 world_normal;
+varying vec2 texture_uv;
+void main() {
+    world_normal = normal_matrix * normal;
+    texture_uv = uv;
+    gl_Position = clip_from_world * (world_from_model * vec4(position, 1.0));
+})");
+        attach(GL_FRAGMENT_SHADER, R"(#version 120
+uniform sampler2D skin;
+uniform vec3 toward_light;
+uniform float diffuse;
+varying vec3 world_normal;
+varying vec2 texture_uv;
+void main() {
+    vec3 albedo = texture2D(skin, texture_uv).rgb;
+    float lit = diffuse * max(0.0, dot(normalize(world_normal), toward_light));
+    vec3 c = clamp(albedo * lit, 0.0, 1.0);
+    vec3 encoded = mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(0.0031308, c));
+    gl_FragColor = vec4(encoded, 1.0);
+})");
+        glBindAttribLocation(program_, 0, "position");
+        glBindAttribLocation(program_, 1, "normal");
+        glBindAttribLocation(program_, 2, "uv");
+        glLinkProgram(program_);
+        GLint linked = 0;
+        glGetProgramiv(program_, GL_LINK_STATUS, &linked);
+        if (linked == 0) throw std::runtime_error("cannot link the GLSL program");
+        // raster's v runs up the image and its rows run down: upload every level bottom row first.
+        glGenTextures(1, &texture_);
+        glBindTexture(GL_TEXTURE_2D, texture_);
+        const raster::Texture& texture = *object_.texture;
+        for (std::size_t level = 0; level < texture.level_count(); ++level) {
+            const raster::Framebuffer& image = texture.level(level);
+            std::vector<std::uint8_t> rows;
+            for (int y = image.height() - 1; y >= 0; --y) {
+                const std::uint8_t* row = image.bytes().data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width()) * 3;
+                rows.insert(rows.end(), row, row + static_cast<std::size_t>(image.width()) * 3);
+            }
+            glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+            glTexImage2D(GL_TEXTURE_2D, static_cast<GLint>(level), GL_SRGB8, image.width(), image.height(), 0, GL_RGB,
+                         GL_UNSIGNED_BYTE, rows.data());
+        }
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, static_cast<GLint>(texture.level_count() - 1));
+        for (const raster::Facet& facet : mesh.facets) indices_.insert(indices_.end(), facet.corners.begin(), facet.corners.end());
+    }
+    ~GlTexturedScene() {
+        glDeleteTextures(1, &texture_);
+        glDeleteProgram(program_);
+    }
+    GlTexturedScene(const GlTexturedScene&) = delete;
+    GlTexturedScene& operator=(const GlTexturedScene&) = delete;
+
+    void draw(const raster::PerspectiveScene& scene) const {
+        glm::dmat4 view, projection;
+        gl_matrices(scene.camera, view, projection);
+        const raster::SceneObject& object = scene.objects.front();
+        const auto& material = std::get<raster::PhongMaterial>(object.material);
+        const glm::mat4 clip_from_world(projection * view);
+        const glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(object.model)));
+        const raster::Rgb bg = scene.background;
+        glClearColor(bg.r / 255.0F, bg.g / 255.0F, bg.b / 255.0F, 1.0F);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LEQUAL);
+        glUseProgram(program_);
+        glUniformMatrix4fv(glGetUniformLocation(program_, "clip_from_world"), 1, GL_FALSE, glm::value_ptr(clip_from_world));
+        glUniformMatrix4fv(glGetUniformLocation(program_, "world_from_model"), 1, GL_FALSE, glm::value_ptr(object.model));
+        glUniformMatrix3fv(glGetUniformLocation(program_, "normal_matrix"), 1, GL_FALSE, glm::value_ptr(normal_matrix));
+        const glm::vec3 toward = scene.lights.front().toward * scene.lights.front().intensity;
+        glUniform3f(glGetUniformLocation(program_, "toward_light"), toward.x, toward.y, toward.z);
+        glUniform1f(glGetUniformLocation(program_, "diffuse"), material.diffuse.r);
+        glUniform1i(glGetUniformLocation(program_, "skin"), 0);
+        glBindTexture(GL_TEXTURE_2D, texture_);
+        const raster::Mesh& mesh = *object.mesh;
+        glEnableVertexAttribArray(0);
+        glEnableVertexAttribArray(1);
+        glEnableVertexAttribArray(2);
+        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, mesh.positions.data());
+        glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 0, mesh.normals.data());
+        glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, 0, mesh.uvs.data());
+        glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(indices_.size()), GL_UNSIGNED_INT, indices_.data());
+        glUseProgram(0);
+        glFinish();
+    }
+
+private:
+    void attach(GLenum kind, const char* source) const {
+        const GLuint shader = glCreateShader(kind);
+        glShaderSource(shader, 1, &source, nullptr);
+        glCompileShader(shader);
+        GLint compiled = 0;
+        glGetShaderiv(shader, GL_COMPILE_STATUS, &compiled);
+        if (compiled == 0) {
+            std::string log(4096, '\0');
+            glGetShaderInfoLog(shader, static_cast<GLsizei>(log.size()), nullptr, log.data());
+            throw std::runtime_error("cannot compile a GLSL shader: " + log);
+        }
+        glAttachShader(program_, shader);
+        glDeleteShader(shader);
+    }
+
+    raster::SceneObject object_;
+    GLuint program_ = 0;
+    GLuint texture_ = 0;
+    std::vector<GLuint> indices_;
+};
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -192,13 +333,16 @@ int main(int argc, char** argv) {
     std::string side = "raster", name = "torus-1";
     int width = 800, height = 600, frames = 360, threads = 1;
     bool agreement = false;
+    std::string picture;
     app.add_option("--side", side, "raster or gl")->check(CLI::IsMember({"raster", "gl"}));
-    app.add_option("--case", name, "torus-D (torus(24 D, 16 D)) or cube");
+    app.add_option("--case", name, "torus-D (torus(24 D, 16 D)), cube, or ptah (the textured seed scene)");
     app.add_option("--width", width)->check(CLI::Range(1, 16383));
     app.add_option("--height", height)->check(CLI::Range(1, 16383));
     app.add_option("--frames", frames)->check(CLI::Range(1, 100000));
     app.add_option("--threads", threads, "raster's threads (GL's come from LP_NUM_THREADS)")->check(CLI::Range(0, 256));
     app.add_flag("--agreement", agreement, "Also draw every 30th frame unlit on both sides and report the share of covered pixels that agree");
+    app.add_option("--picture", picture, "Also write the first frame from both sides to PREFIX-raster.webp and PREFIX-gl.webp")
+        ->option_text("PREFIX");
     CLI11_PARSE(app, argc, argv);
     try {
         const Case c{name, width, height};
@@ -206,19 +350,31 @@ int main(int argc, char** argv) {
         const auto shared = std::make_shared<const raster::Mesh>(mesh);
         raster::Framebuffer image(width, height);
         raster::DepthBuffer depth;
+        const bool textured = name == "ptah";
+        const std::optional<raster::SeedScene> seed = textured ? std::optional<raster::SeedScene>(std::in_place, "ptah") : std::nullopt;
+        const auto scene_at = [&](int i) { return textured ? seed->frame(width, height, i, frames) : raster_scene(c, shared, i, frames); };
         std::unique_ptr<GlContext> gl;
-        if (side == "gl" || agreement) gl = std::make_unique<GlContext>(width, height);
+        std::unique_ptr<GlTexturedScene> gl_textured;
+        if (side == "gl" || agreement || !picture.empty()) gl = std::make_unique<GlContext>(width, height);
+        if (gl && textured) gl_textured = std::make_unique<GlTexturedScene>(scene_at(0));
+        const auto draw_gl = [&](int i) { textured ? gl_textured->draw(scene_at(i)) : gl_frame(c, mesh, nullptr, i, frames); };
         const auto start = std::chrono::steady_clock::now();
         for (int i = 0; i < frames; ++i) {
             if (side == "raster") {
-                raster::render(image, raster_scene(c, shared, i, frames), depth, {threads});
+                raster::render(image, scene_at(i), depth, {threads});
             } else {
-                gl_frame(c, mesh, nullptr, i, frames);
+                draw_gl(i);
             }
         }
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (!picture.empty()) {
+            raster::render(image, scene_at(0), depth, {threads});
+            raster::write_webp_still(image, picture + "-raster.webp");
+            draw_gl(0);
+            raster::write_webp_still(gl->image(), picture + "-gl.webp");
+        }
         double agree = -1.0;
-        if (agreement) {
+        if (agreement && !textured) {
             const raster::Mesh ids = with_facet_ids(mesh);
             std::vector<std::uint8_t> colours;
             for (const glm::vec2 uv : ids.uvs) {
@@ -243,6 +399,26 @@ int main(int argc, char** argv) {
                 }
             }
             agree = covered > 0 ? static_cast<double>(same) / static_cast<double>(covered) : 1.0;
+        }
+        if (agreement && textured) {
+            // Lit and filtered, the two cannot match exactly: the share of the model's pixels
+            // within kClose levels of GL's on every channel.
+            constexpr int kClose = 2;
+            long covered = 0, close = 0;
+            for (int i = 0; i < frames; i += 30) {
+                const raster::PerspectiveScene scene = scene_at(i);
+                raster::render(image, scene, depth, {threads});
+                draw_gl(i);
+                for (int y = 0; y < height; ++y) {
+                    for (int x = 0; x < width; ++x) {
+                        const raster::Rgb a = image.pixel(x, y), b = gl->pixel(x, y);
+                        if (a == scene.background && b == scene.background) continue;
+                        ++covered;
+                        close += std::abs(a.r - b.r) <= kClose && std::abs(a.g - b.g) <= kClose && std::abs(a.b - b.b) <= kClose ? 1 : 0;
+                    }
+                }
+            }
+            agree = covered > 0 ? static_cast<double>(close) / static_cast<double>(covered) : 1.0;
         }
         std::printf("%s,%s,%d,%d,%zu,%d,%d,%.4f,%.2f,%.6f\n", side.c_str(), name.c_str(), width, height, mesh.facets.size(),
                     side == "raster" ? threads : -1, frames, seconds, frames / seconds, agree);

@@ -1,5 +1,8 @@
 #include <raster/mesh.hpp>
 
+#include "posing.hpp"
+
+#include <algorithm>
 #include <cmath>
 #include <utility>
 #include <glm/geometric.hpp>
@@ -27,29 +30,42 @@ Facet facet_facing_away(const std::vector<glm::vec3>& positions, std::uint32_t a
 Mesh posed(const Mesh& mesh, const glm::mat4& model) { return posed(mesh, model, PoseParts{}); }
 
 Mesh posed(const Mesh& mesh, const glm::mat4& model, PoseParts parts) {
-    const glm::mat3 linear(model);
-    const glm::mat3 normal_matrix = glm::transpose(glm::inverse(linear));
-    Mesh result;
-    result.surface = mesh.surface;
-    result.convex = mesh.convex;
-    result.positions.reserve(mesh.positions.size());
-    for (const glm::vec3& p : mesh.positions) result.positions.push_back(glm::vec3(model * glm::vec4(p, 1.0F)));
-    result.uvs = mesh.uvs;
-    if (parts.vertex_normals) {
-        result.normals.reserve(mesh.normals.size());
-        for (const glm::vec3& n : mesh.normals) result.normals.push_back(unit_or_zero(normal_matrix * n));
-    } else {
-        result.normals.resize(mesh.normals.size());
-    }
-    // A mirror turns clockwise into counter-clockwise: swap two corners to keep the convention.
-    const bool mirrored = glm::determinant(linear) < 0.0F;
-    result.facets.reserve(mesh.facets.size());
-    for (Facet facet : mesh.facets) {
-        if (mirrored) std::swap(facet.corners[1], facet.corners[2]);
-        facet.normal = parts.facet_normals ? unit_or_zero(normal_matrix * facet.normal) : glm::vec3(0.0F);
-        result.facets.push_back(facet);
-    }
-    return result;
+    detail::Posing posing(mesh, model, parts);
+    posing.vertices(0, std::max(mesh.positions.size(), mesh.normals.size()));
+    posing.facets(0, mesh.facets.size());
+    return std::move(posing).take();
 }
+
+namespace detail {
+
+Posing::Posing(const Mesh& mesh, const glm::mat4& model, PoseParts parts)
+    : source_(mesh), model_(model), normal_matrix_(glm::transpose(glm::inverse(glm::mat3(model)))),
+      // A mirror turns clockwise into counter-clockwise: two corners are swapped to keep the convention.
+      mirrored_(glm::determinant(glm::mat3(model)) < 0.0F), parts_(parts) {
+    result_.surface = mesh.surface;
+    result_.convex = mesh.convex;
+    result_.positions.resize(mesh.positions.size());
+    result_.normals.resize(mesh.normals.size());  // zero where vertex normals are left out
+    result_.uvs = mesh.uvs;
+    result_.facets.resize(mesh.facets.size());
+}
+
+void Posing::vertices(std::size_t begin, std::size_t end) noexcept {
+    for (std::size_t i = begin; i < end; ++i) {  // normals may not match positions yet: drawing checks that
+        if (i < source_.positions.size()) result_.positions[i] = glm::vec3(model_ * glm::vec4(source_.positions[i], 1.0F));
+        if (parts_.vertex_normals && i < source_.normals.size()) result_.normals[i] = unit_or_zero(normal_matrix_ * source_.normals[i]);
+    }
+}
+
+void Posing::facets(std::size_t begin, std::size_t end) noexcept {
+    for (std::size_t f = begin; f < end; ++f) {
+        Facet facet = source_.facets[f];
+        if (mirrored_) std::swap(facet.corners[1], facet.corners[2]);
+        facet.normal = parts_.facet_normals ? unit_or_zero(normal_matrix_ * facet.normal) : glm::vec3(0.0F);
+        result_.facets[f] = facet;
+    }
+}
+
+}  // namespace detail
 
 }  // namespace raster

@@ -4,9 +4,13 @@
 #include <raster/textured_shaders.hpp>
 
 #include "clipped_facets.hpp"
+#include "posing.hpp"
 #include "strip_bins.hpp"
+#include "worker_team.hpp"
 
 #include <algorithm>
+#include <numeric>
+#include <utility>
 #include <thread>
 #include <type_traits>
 #include <vector>
@@ -73,19 +77,29 @@ int thread_count(int asked, int height) {
     return std::clamp(asked == 0 ? cores : asked, 1, height);
 }
 
-// Clears to the background, prepares depth only when the scene needs it, and draws every posed
-// object in strips of rows: `gather(depth or nullptr, mesh, shader, visit)` hands each triangle
-// facing the camera to `visit`, and the strips are cleared (on the first object's pass) and
-// drawn on `options.threads` threads.
-template <detail::Interpolation kMode, typename Camera, typename Gather>
+// Facets per batch of the front end: enough to keep a thread busy, few enough to share out.
+constexpr std::size_t kFacetsPerBatch = 4096;
+constexpr std::size_t kVerticesPerBatch = 8192;
+
+// Clears to the background, prepares depth only when the scene needs it, and draws every object
+// in three parallel steps on a team of `options.threads` threads: its vertices posed and put
+// through the front end `front_for(depth or nullptr, mesh, shader)` in batches, then its facets
+// likewise, each batch binned into strips of rows, then the strips, cleared on the first
+// object's pass and drawn with every batch's triangles in facet order.
+template <detail::Interpolation kMode, typename Camera, typename FrontFor>
 std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& scene, DepthBuffer& depth,
-                           std::optional<glm::vec3> eye, RenderOptions options, Gather gather) {
-    const int threads = thread_count(options.threads, framebuffer.height());
+                           std::optional<glm::vec3> eye, RenderOptions options, FrontFor front_for) {
+    detail::WorkerTeam team(thread_count(options.threads, framebuffer.height()));
     const bool depth_test = needs_depth(scene);
     if (depth_test) depth.resize(framebuffer.width(), framebuffer.height());  // each strip clears its own rows
     DepthBuffer* const tested = depth_test ? &depth : nullptr;
     const glm::vec3 to_eye = -scene.camera.direction();
     const int width = framebuffer.width(), rows = detail::strip_rows(width);
+    const auto batches = [](std::size_t items, std::size_t per) { return static_cast<int>((items + per - 1) / per); };
+    const auto range = [](int batch, std::size_t items, std::size_t per) {
+        const std::size_t begin = static_cast<std::size_t>(batch) * per;
+        return std::pair{begin, std::min(items, begin + per)};
+    };
     bool cleared = false;
     const auto clear = [&](const PixelRect& strip) {
         framebuffer.clear_rows(strip.y, strip.y + strip.height, scene.background);
@@ -97,25 +111,45 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
         drawn += draw_shaded(object, scene.lights, scene.point_lights, to_eye, eye, scene.darkening, [&](const auto& shader) {
             using Shader = std::remove_cvref_t<decltype(shader)>;
             const bool per_facet = Shader::kFacetNormal || object.mesh->surface == Surface::faceted;
-            const Mesh mesh = posed(*object.mesh, object.model, {.vertex_normals = !per_facet, .facet_normals = per_facet});
-            detail::StripBins<typename Shader::Varying> bins(framebuffer.height(), rows);
-            bins.reserve(mesh.facets.size());
-            const std::size_t facets = gather(tested, mesh, shader, [&](const auto& corners) { bins.add(corners); });
-            bins.finish();
-            detail::for_each_strip(bins.strips(), threads, [&](int s) {
-                const PixelRect strip = bins.strip(s, width);
+            detail::check_drawable(framebuffer, tested, *object.mesh);  // before posing reads its facets
+            detail::Posing posing(*object.mesh, object.model, {.vertex_normals = !per_facet, .facet_normals = per_facet});
+            const Mesh& mesh = posing.mesh();  // sized now, filled by the batches below
+            auto front = front_for(tested, mesh, shader);
+            const std::size_t vertices = mesh.positions.size(), facets = mesh.facets.size();
+            team.for_each(batches(vertices, kVerticesPerBatch), [&](int b) {
+                const auto [begin, end] = range(b, vertices, kVerticesPerBatch);
+                posing.vertices(begin, end);
+                front.vertices(begin, end);  // reads vertex i's posed data only
+            });
+            std::vector<detail::StripBins<typename Shader::Varying>> bins(static_cast<std::size_t>(batches(facets, kFacetsPerBatch)),
+                                                                          {framebuffer.height(), rows});
+            std::vector<std::size_t> counted(bins.size());
+            team.for_each(static_cast<int>(bins.size()), [&](int b) {
+                const auto [begin, end] = range(b, facets, kFacetsPerBatch);
+                detail::StripBins<typename Shader::Varying>& batch = bins[static_cast<std::size_t>(b)];
+                batch.reserve(end - begin);
+                posing.facets(begin, end);  // facet f reads its own posed corners and normal only
+                counted[static_cast<std::size_t>(b)] = front.facets(begin, end, [&](const auto& corners) { batch.add(corners); });
+                batch.finish();
+            });
+            const int strips = (framebuffer.height() + rows - 1) / rows;
+            team.for_each(strips, [&](int s) {
+                const PixelRect strip{0, s * rows, width, std::min(rows, framebuffer.height() - s * rows)};
                 if (!cleared) clear(strip);
-                bins.for_each_in(s, [&](const auto& corners) {
-                    detail::shade_triangle<Shader, detail::FloatDepth, kMode>(framebuffer, tested, corners, shader, {}, strip);
-                });
+                for (const auto& batch : bins) {
+                    batch.for_each_in(s, [&](const auto& corners) {
+                        detail::shade_triangle<Shader, detail::FloatDepth, kMode>(framebuffer, tested, corners, shader, {}, strip);
+                    });
+                }
             });
             cleared = true;
-            return facets;
+            return std::accumulate(counted.begin(), counted.end(), std::size_t{0});
         });
     }
     if (!cleared) {
-        const detail::StripBins<float> empty(framebuffer.height(), rows);
-        detail::for_each_strip(empty.strips(), threads, [&](int s) { clear(empty.strip(s, width)); });
+        team.for_each((framebuffer.height() + rows - 1) / rows, [&](int s) {
+            clear({0, s * rows, width, std::min(rows, framebuffer.height() - s * rows)});
+        });
     }
     return drawn;
 }
@@ -125,17 +159,16 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
 std::size_t render(Framebuffer& framebuffer, const Scene& scene, DepthBuffer& depth, RenderOptions options) {
     // Orthographic: attributes are linear on screen, and the direction toward the viewer is the same at every pixel.
     return render_objects<detail::Interpolation::screen_linear>(
-        framebuffer, scene, depth, std::nullopt, options, [&](DepthBuffer* tested, const Mesh& mesh, const auto& shader, auto visit) {
-            return detail::facing_triangles(framebuffer, tested, scene.camera, mesh, shader, visit);
+        framebuffer, scene, depth, std::nullopt, options, [&](DepthBuffer* tested, const Mesh& mesh, const auto& shader) {
+            return detail::OrthoFront(framebuffer, tested, scene.camera, mesh, shader);
         });
 }
 
 std::size_t render(Framebuffer& framebuffer, const PerspectiveScene& scene, DepthBuffer& depth, RenderOptions options) {
     // Phase 2 takes the direction toward the eye at every point.
     return render_objects<detail::Interpolation::perspective>(
-        framebuffer, scene, depth, scene.camera.eye(), options, [&](DepthBuffer* tested, const Mesh& mesh, const auto& shader, auto visit) {
-            return detail::facing_triangles_in_perspective(framebuffer, tested, scene.camera, mesh, shader,
-                                                           detail::kGuardBandPixels, visit);
+        framebuffer, scene, depth, scene.camera.eye(), options, [&](DepthBuffer* tested, const Mesh& mesh, const auto& shader) {
+            return detail::PerspectiveFront(framebuffer, tested, scene.camera, mesh, shader, detail::kGuardBandPixels);
         });
 }
 

@@ -217,16 +217,10 @@ std::array<typename Shader::Varying, 3> facet_varyings(const Shader& shader, con
     return {per_vertex[facet.corners[0]], per_vertex[facet.corners[1]], per_vertex[facet.corners[2]]};
 }
 
-// The vertex stage's per-vertex Varyings, when the shader uses them.
+// The vertex stage's Varying of vertex i, for shaders that light per vertex or per pixel.
 template <typename Shader>
-std::vector<typename Shader::Varying> vertex_varyings(const Shader& shader, const Mesh& mesh) {
-    std::vector<typename Shader::Varying> varyings;
-    if (Shader::kFacetNormal || mesh.surface == Surface::faceted) return varyings;
-    varyings.reserve(mesh.positions.size());
-    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
-        varyings.push_back(shader.vertex({mesh.positions[i], mesh.normals[i], mesh.uvs.empty() ? glm::vec2(0.0F) : mesh.uvs[i]}));
-    }
-    return varyings;
+typename Shader::Varying vertex_varying(const Shader& shader, const Mesh& mesh, std::size_t i) {
+    return shader.vertex({mesh.positions[i], mesh.normals[i], mesh.uvs.empty() ? glm::vec2(0.0F) : mesh.uvs[i]});
 }
 
 // Whether a triangle's corners leave every pixel centre of a band of rows above or below them,
@@ -239,45 +233,73 @@ inline bool misses_rows(const std::array<SubpixelPoint, 3>& points, const PixelR
 
 struct ScreenVertex {
     std::optional<SubpixelPoint> at;  // nothing when not finite or too far away
-    float depth;
+    float depth = 0.0F;
 };
 
-// The vertex stage of an orthographic view: every position projected once, every corner's
-// Varying made once per vertex or, for facet normals, once per facet; `visit(corners)` gets each
-// facet that faces the camera, in facet order. Returns the facets visited.
+// The front end of an orthographic view in two steps, each of which may be split into ranges
+// run on several threads: vertices() projects positions and makes per-vertex Varyings;
+// facets() then hands `visit(corners)` every facet of its range facing the camera, in order.
+template <typename Shader>
+class OrthoFront {
+public:
+    using Varying = typename Shader::Varying;
+    // Throws std::invalid_argument for a mesh that cannot be drawn (check_drawable).
+    OrthoFront(const Framebuffer& colour, const DepthBuffer* depth_buffer, const OrthoCamera& camera, const Mesh& mesh,
+               const Shader& shader)
+        : camera_(camera), mesh_(mesh), shader_(shader), screen_(mesh.positions.size()) {
+        check_drawable(colour, depth_buffer, mesh);
+        if (!Shader::kFacetNormal && mesh.surface != Surface::faceted) varyings_.resize(mesh.positions.size());
+    }
+
+    void vertices(std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            const glm::dvec3 view = camera_.view_from_world(mesh_.positions[i]);
+            // A depth beyond the limit is treated like a position too far away: the facet is skipped.
+            const bool usable_depth = std::abs(view.z) <= kMaxViewDepth;
+            screen_[i] = {usable_depth ? snap_to_subpixel(camera_.screen_from_view(view)) : std::nullopt, static_cast<float>(view.z)};
+            if (!varyings_.empty()) varyings_[i] = vertex_varying(shader_, mesh_, i);
+        }
+    }
+
+    // Returns the facets visited.
+    template <typename Visit>
+    std::size_t facets(std::size_t begin, std::size_t end, Visit visit) const {
+        std::size_t drawn = 0;
+        for (std::size_t f = begin; f < end; ++f) {
+            const Facet& facet = mesh_.facets[f];
+            std::array<ShadedCorner<Varying>, 3> corners{};
+            bool on_screen = true;
+            for (std::size_t k = 0; k < 3 && on_screen; ++k) {
+                const ScreenVertex& vertex = screen_[facet.corners[k]];
+                on_screen = vertex.at.has_value();
+                if (on_screen) corners[k].at = *vertex.at, corners[k].depth = vertex.depth;
+            }
+            if (!on_screen) continue;
+            const std::array<SubpixelPoint, 3> points{corners[0].at, corners[1].at, corners[2].at};
+            if (twice_signed_area(points) <= 0) continue;  // facing away, or seen edge-on
+            ++drawn;
+            const std::array<Varying, 3> values = facet_varyings(shader_, mesh_, facet, varyings_);
+            for (std::size_t k = 0; k < 3; ++k) corners[k].varying = values[k];
+            visit(corners);
+        }
+        return drawn;
+    }
+
+private:
+    const OrthoCamera& camera_;
+    const Mesh& mesh_;
+    const Shader& shader_;
+    std::vector<ScreenVertex> screen_;
+    std::vector<Varying> varyings_;  // empty when the shader lights per facet
+};
+
+// Both steps on this thread, over the whole mesh.
 template <typename Shader, typename Visit>
 std::size_t facing_triangles(const Framebuffer& colour, const DepthBuffer* depth_buffer, const OrthoCamera& camera,
                              const Mesh& mesh, const Shader& shader, Visit visit) {
-    using Varying = typename Shader::Varying;
-    check_drawable(colour, depth_buffer, mesh);
-    std::vector<ScreenVertex> screen;
-    screen.reserve(mesh.positions.size());
-    for (const glm::vec3& position : mesh.positions) {
-        const glm::dvec3 view = camera.view_from_world(position);
-        // A depth beyond the limit is treated like a position too far away: the facet is skipped.
-        const bool usable_depth = std::abs(view.z) <= kMaxViewDepth;
-        screen.push_back({usable_depth ? snap_to_subpixel(camera.screen_from_view(view)) : std::nullopt,
-                          static_cast<float>(view.z)});
-    }
-    const std::vector<Varying> varyings = vertex_varyings(shader, mesh);
-    std::size_t drawn = 0;
-    for (const Facet& facet : mesh.facets) {
-        std::array<ShadedCorner<Varying>, 3> corners{};
-        bool on_screen = true;
-        for (std::size_t k = 0; k < 3 && on_screen; ++k) {
-            const ScreenVertex& vertex = screen[facet.corners[k]];
-            on_screen = vertex.at.has_value();
-            if (on_screen) corners[k].at = *vertex.at, corners[k].depth = vertex.depth;
-        }
-        if (!on_screen) continue;
-        const std::array<SubpixelPoint, 3> points{corners[0].at, corners[1].at, corners[2].at};
-        if (twice_signed_area(points) <= 0) continue;  // facing away, or seen edge-on
-        ++drawn;
-        const std::array<Varying, 3> values = facet_varyings(shader, mesh, facet, varyings);
-        for (std::size_t k = 0; k < 3; ++k) corners[k].varying = values[k];
-        visit(corners);
-    }
-    return drawn;
+    OrthoFront<Shader> front(colour, depth_buffer, camera, mesh, shader);
+    front.vertices(0, mesh.positions.size());
+    return front.facets(0, mesh.facets.size(), visit);
 }
 
 // Draws every facet facing an orthographic camera, into `rows` only when given.

@@ -4,16 +4,14 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cstdint>
-#include <exception>
-#include <thread>
 #include <vector>
 
 // A render in strips of rows: an object's triangles are gathered once, binned by the strips
 // their pixel centres can reach, and each strip is cleared and drawn while its colour and depth
 // rows sit in cache. Strips go to threads in any order and the result is bit-identical, since
-// every pixel still meets the same triangles in the same order.
+// every pixel still meets the same triangles in the same order. An object's facets may be
+// gathered in several batches, one StripBins each, drawn in batch order.
 namespace raster::detail {
 
 // Rows per strip: a power of two from 4 to 64 keeping a strip's colour and depth (7 bytes a
@@ -95,33 +93,5 @@ private:
     std::vector<std::uint32_t> starts_;  // per strip, where its members begin; one past the end last
     std::vector<std::uint32_t> members_;
 };
-
-// Runs work(s) for every strip s on `threads` threads (the caller's among them), each taking the
-// next strip not yet taken; the first exception is rethrown once all have stopped.
-template <typename Work>
-void for_each_strip(int strips, int threads, Work work) {
-    if (threads <= 1 || strips <= 1) {
-        for (int s = 0; s < strips; ++s) work(s);
-        return;
-    }
-    std::atomic<int> next{0};
-    std::vector<std::exception_ptr> failures(static_cast<std::size_t>(threads));
-    const auto take = [&](int t) {
-        try {
-            for (int s = next.fetch_add(1); s < strips; s = next.fetch_add(1)) work(s);
-        } catch (...) {
-            failures[static_cast<std::size_t>(t)] = std::current_exception();
-            next = strips;  // the others stop at their next strip
-        }
-    };
-    {
-        std::vector<std::jthread> helpers;
-        for (int t = 1; t < std::min(threads, strips); ++t) helpers.emplace_back(take, t);
-        take(0);
-    }
-    for (const std::exception_ptr& failure : failures) {
-        if (failure) std::rethrow_exception(failure);
-    }
-}
 
 }  // namespace raster::detail
