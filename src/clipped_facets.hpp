@@ -20,12 +20,11 @@ template <typename Shader>
 class PerspectiveFront {
 public:
     using Varying = typename Shader::Varying;
-    // Throws std::invalid_argument for a mesh that cannot be drawn or a camera of another size.
-    PerspectiveFront(const Framebuffer& colour, const DepthBuffer* depth_buffer, const PerspectiveCamera& camera,
-                     const Mesh& mesh, const Shader& shader, double band)
+    // For a mesh that passed check_drawable; throws std::invalid_argument for a camera whose
+    // size is not the framebuffer's.
+    PerspectiveFront(const Framebuffer& colour, const PerspectiveCamera& camera, const Mesh& mesh, const Shader& shader, double band)
         : camera_(camera), mesh_(mesh), shader_(shader), frustum_(colour.width(), colour.height(), band),
           clip_(mesh.positions.size()), snapped_(mesh.positions.size()) {
-        check_drawable(colour, depth_buffer, mesh);
         if (camera.width() != colour.width() || camera.height() != colour.height()) {
             throw std::invalid_argument("camera and framebuffer differ in size");
         }
@@ -108,7 +107,8 @@ template <typename Shader, typename Visit>
 std::size_t facing_triangles_in_perspective(const Framebuffer& colour, const DepthBuffer* depth_buffer,
                                             const PerspectiveCamera& camera, const Mesh& mesh, const Shader& shader,
                                             double band, Visit visit) {
-    PerspectiveFront<Shader> front(colour, depth_buffer, camera, mesh, shader, band);
+    check_drawable(colour, depth_buffer, mesh);
+    PerspectiveFront<Shader> front(colour, camera, mesh, shader, band);
     front.vertices(0, mesh.positions.size());
     return front.facets(0, mesh.facets.size(), visit);
 }

@@ -83,7 +83,7 @@ constexpr std::size_t kVerticesPerBatch = 8192;
 
 // Clears to the background, prepares depth only when the scene needs it, and draws every object
 // in three parallel steps on a team of `options.threads` threads: its vertices posed and put
-// through the front end `front_for(depth or nullptr, mesh, shader)` in batches, then its facets
+// through the front end `front_for(mesh, shader)` in batches, then its facets
 // likewise, each batch binned into strips of rows, then the strips, cleared on the first
 // object's pass and drawn with every batch's triangles in facet order.
 template <detail::Interpolation kMode, typename Camera, typename FrontFor>
@@ -114,7 +114,7 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
             detail::check_drawable(framebuffer, tested, *object.mesh);  // before posing reads its facets
             detail::Posing posing(*object.mesh, object.model, {.vertex_normals = !per_facet, .facet_normals = per_facet});
             const Mesh& mesh = posing.mesh();  // sized now, filled by the batches below
-            auto front = front_for(tested, mesh, shader);
+            auto front = front_for(mesh, shader);
             const std::size_t vertices = mesh.positions.size(), facets = mesh.facets.size();
             team.for_each(batches(vertices, kVerticesPerBatch), [&](int b) {
                 const auto [begin, end] = range(b, vertices, kVerticesPerBatch);
@@ -159,16 +159,16 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
 std::size_t render(Framebuffer& framebuffer, const Scene& scene, DepthBuffer& depth, RenderOptions options) {
     // Orthographic: attributes are linear on screen, and the direction toward the viewer is the same at every pixel.
     return render_objects<detail::Interpolation::screen_linear>(
-        framebuffer, scene, depth, std::nullopt, options, [&](DepthBuffer* tested, const Mesh& mesh, const auto& shader) {
-            return detail::OrthoFront(framebuffer, tested, scene.camera, mesh, shader);
+        framebuffer, scene, depth, std::nullopt, options, [&](const Mesh& mesh, const auto& shader) {
+            return detail::OrthoFront(scene.camera, mesh, shader);
         });
 }
 
 std::size_t render(Framebuffer& framebuffer, const PerspectiveScene& scene, DepthBuffer& depth, RenderOptions options) {
     // Phase 2 takes the direction toward the eye at every point.
     return render_objects<detail::Interpolation::perspective>(
-        framebuffer, scene, depth, scene.camera.eye(), options, [&](DepthBuffer* tested, const Mesh& mesh, const auto& shader) {
-            return detail::PerspectiveFront(framebuffer, tested, scene.camera, mesh, shader, detail::kGuardBandPixels);
+        framebuffer, scene, depth, scene.camera.eye(), options, [&](const Mesh& mesh, const auto& shader) {
+            return detail::PerspectiveFront(framebuffer, scene.camera, mesh, shader, detail::kGuardBandPixels);
         });
 }
 

@@ -243,11 +243,9 @@ template <typename Shader>
 class OrthoFront {
 public:
     using Varying = typename Shader::Varying;
-    // Throws std::invalid_argument for a mesh that cannot be drawn (check_drawable).
-    OrthoFront(const Framebuffer& colour, const DepthBuffer* depth_buffer, const OrthoCamera& camera, const Mesh& mesh,
-               const Shader& shader)
+    // For a mesh that passed check_drawable: its facets name only vertices it has.
+    OrthoFront(const OrthoCamera& camera, const Mesh& mesh, const Shader& shader)
         : camera_(camera), mesh_(mesh), shader_(shader), screen_(mesh.positions.size()) {
-        check_drawable(colour, depth_buffer, mesh);
         if (!Shader::kFacetNormal && mesh.surface != Surface::faceted) varyings_.resize(mesh.positions.size());
     }
 
@@ -297,7 +295,8 @@ private:
 template <typename Shader, typename Visit>
 std::size_t facing_triangles(const Framebuffer& colour, const DepthBuffer* depth_buffer, const OrthoCamera& camera,
                              const Mesh& mesh, const Shader& shader, Visit visit) {
-    OrthoFront<Shader> front(colour, depth_buffer, camera, mesh, shader);
+    check_drawable(colour, depth_buffer, mesh);
+    OrthoFront<Shader> front(camera, mesh, shader);
     front.vertices(0, mesh.positions.size());
     return front.facets(0, mesh.facets.size(), visit);
 }

@@ -37,6 +37,14 @@ inline RowRange rows_reached(const std::array<SubpixelPoint, 3>& points, int hei
     return {std::max(-floor_div(-low, kSubpixelOne), 0), std::min(floor_div(high, kSubpixelOne), height - 1)};
 }
 
+// Whether no column's pixel centre lies between a triangle's leftmost and rightmost corner: a
+// sliver the fill would find empty, dropped before any setup (rows_reached does the same for rows).
+inline bool between_columns(const std::array<SubpixelPoint, 3>& points) noexcept {
+    const std::int32_t low = std::min({points[0].x, points[1].x, points[2].x});
+    const std::int32_t high = std::max({points[0].x, points[1].x, points[2].x});
+    return -floor_div(-low, kSubpixelOne) > floor_div(high, kSubpixelOne);
+}
+
 // One object's triangles with their corners shaded, and for every strip the triangles in it,
 // in the order they were added.
 template <typename Varying>
@@ -58,10 +66,11 @@ public:
         spans_.reserve(triangles);
     }
 
-    // Keeps a triangle that reaches at least one row; counts it into its strips.
+    // Keeps a triangle that can cover a pixel centre of the image; counts it into its strips.
     void add(const Triangle& corners) {
-        const RowRange rows = rows_reached({corners[0].at, corners[1].at, corners[2].at}, height_);
-        if (rows.first > rows.last) return;  // above or below the image, in the guard band
+        const std::array<SubpixelPoint, 3> points{corners[0].at, corners[1].at, corners[2].at};
+        const RowRange rows = rows_reached(points, height_);
+        if (rows.first > rows.last || between_columns(points)) return;  // covers no pixel centre of the image
         const int first = rows.first / rows_, last = rows.last / rows_;
         triangles_.push_back(corners);
         spans_.push_back({first, last});
