@@ -30,18 +30,17 @@ int main(int argc, char** argv) {
         if (raster::is_seed_scene(name)) {
             const raster::SeedScene seed(name);
             const int count = frames > 0 ? frames : seed.info().frames;
-            raster::DepthBuffer depth;
+            raster::Renderer renderer(options.render_options());
             return export_animation(app, options, count, fps, [&](raster::Framebuffer& frame, int index) {
-                raster::render(frame, seed.frame(frame.width(), frame.height(), index, count), depth, options.render_options());
+                renderer.render(frame, seed.frame(frame.width(), frame.height(), index, count));
             });
         }
         const raster::DiaryScene scene(name);
         const int count = frames > 0 ? frames : scene.info().frames;
         const raster::DetailPlan plan = automatic ? plan_for(scene, options.width, options.height, count) : raster::DetailPlan{};
-        raster::DepthBuffer depth;
+        raster::Renderer renderer(options.render_options());
         return export_animation(app, options, count, fps, [&](raster::Framebuffer& frame, int index) {
-            render_scene(frame, raster::with_detail(scene.frame(frame.width(), frame.height(), index, count), plan), fov, depth,
-                         options.render_options());
+            render_scene(frame, raster::with_detail(scene.frame(frame.width(), frame.height(), index, count), plan), fov, renderer);
         }) + describe(plan);
     });
 }

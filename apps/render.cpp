@@ -126,13 +126,13 @@ int main(int argc, char** argv) {
         }
         const std::size_t triangles = raster::triangle_count(model);
         const raster::ModelStage stage(std::make_shared<const raster::Model>(std::move(model)), view, options.width, options.height);
-        raster::DepthBuffer depth;
+        raster::Renderer renderer(options.render_options());
         std::string report;
         if (frames == 0) {
-            report = export_still(app, options, [&](raster::Framebuffer& frame) { stage.render(frame, depth, 0.0, options.render_options()); });
+            report = export_still(app, options, [&](raster::Framebuffer& frame) { stage.render(frame, renderer, 0.0); });
         } else {
             report = export_animation(app, options, frames, fps, [&](raster::Framebuffer& frame, int index) {
-                stage.render(frame, depth, 2.0 * std::numbers::pi * index / frames, options.render_options());
+                stage.render(frame, renderer, 2.0 * std::numbers::pi * index / frames);
             });
         }
         return report + ", " + std::to_string(triangles) + " triangles, " + seconds_since(start);

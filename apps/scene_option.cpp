@@ -76,11 +76,10 @@ void add_perspective_option(CLI::App& app, int& fov_degrees) {
                        "close up)");
 }
 
-void render_scene(raster::Framebuffer& frame, const raster::Scene& scene, int fov_degrees, raster::DepthBuffer& depth,
-                  raster::RenderOptions options) {
+void render_scene(raster::Framebuffer& frame, const raster::Scene& scene, int fov_degrees, raster::Renderer& renderer) {
     if (fov_degrees == 0) {
-        raster::render(frame, scene, depth, options);
+        renderer.render(frame, scene);
     } else {
-        raster::render(frame, raster::in_perspective(scene, frame.width(), frame.height(), fov_degrees), depth, options);
+        renderer.render(frame, raster::in_perspective(scene, frame.width(), frame.height(), fov_degrees));
     }
 }

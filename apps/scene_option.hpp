@@ -29,5 +29,4 @@ void check_seed_options(const std::string& scene, bool automatic, int fov_degree
 // of that vertical field of view, the eye moved back so the scene keeps its framing.
 void add_perspective_option(CLI::App& app, int& fov_degrees);
 // Renders the scene through the camera the option chose.
-void render_scene(raster::Framebuffer& frame, const raster::Scene& scene, int fov_degrees, raster::DepthBuffer& depth,
-                  raster::RenderOptions options);
+void render_scene(raster::Framebuffer& frame, const raster::Scene& scene, int fov_degrees, raster::Renderer& renderer);

@@ -24,15 +24,14 @@ int main(int argc, char** argv) {
         if (raster::is_seed_scene(name)) {
             const raster::SeedScene seed(name);
             return export_still(app, options, [&](raster::Framebuffer& frame) {
-                raster::DepthBuffer depth;
-                raster::render(frame, seed.still(frame.width(), frame.height()), depth, options.render_options());
+                raster::Renderer(options.render_options()).render(frame, seed.still(frame.width(), frame.height()));
             });
         }
         const raster::DiaryScene scene(name);
         const raster::DetailPlan plan = automatic ? plan_for(scene, options.width, options.height, 0) : raster::DetailPlan{};
         return export_still(app, options, [&](raster::Framebuffer& frame) {
-            raster::DepthBuffer depth;
-            render_scene(frame, raster::with_detail(scene.still(frame.width(), frame.height()), plan), fov, depth, options.render_options());
+            raster::Renderer renderer(options.render_options());
+            render_scene(frame, raster::with_detail(scene.still(frame.width(), frame.height()), plan), fov, renderer);
         }) + describe(plan);
     });
 }

@@ -349,7 +349,8 @@ int main(int argc, char** argv) {
         const raster::Mesh mesh = mesh_for(name);
         const auto shared = std::make_shared<const raster::Mesh>(mesh);
         raster::Framebuffer image(width, height);
-        raster::DepthBuffer depth;
+        raster::DepthBuffer depth;  // for the agreement check's direct draws
+        raster::Renderer renderer({threads});  // its threads start once, as llvmpipe's do
         const bool textured = name == "ptah";
         const std::optional<raster::SeedScene> seed = textured ? std::optional<raster::SeedScene>(std::in_place, "ptah") : std::nullopt;
         const auto scene_at = [&](int i) { return textured ? seed->frame(width, height, i, frames) : raster_scene(c, shared, i, frames); };
@@ -361,14 +362,14 @@ int main(int argc, char** argv) {
         const auto start = std::chrono::steady_clock::now();
         for (int i = 0; i < frames; ++i) {
             if (side == "raster") {
-                raster::render(image, scene_at(i), depth, {threads});
+                renderer.render(image, scene_at(i));
             } else {
                 draw_gl(i);
             }
         }
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (!picture.empty()) {
-            raster::render(image, scene_at(0), depth, {threads});
+            renderer.render(image, scene_at(0));
             raster::write_webp_still(image, picture + "-raster.webp");
             draw_gl(0);
             raster::write_webp_still(gl->image(), picture + "-gl.webp");
@@ -407,7 +408,7 @@ int main(int argc, char** argv) {
             long covered = 0, close = 0;
             for (int i = 0; i < frames; i += 30) {
                 const raster::PerspectiveScene scene = scene_at(i);
-                raster::render(image, scene, depth, {threads});
+                renderer.render(image, scene);
                 draw_gl(i);
                 for (int y = 0; y < height; ++y) {
                     for (int x = 0; x < width; ++x) {

@@ -114,15 +114,25 @@ std::vector<SceneObject> ModelStage::objects(double turn) const {
     return objects;
 }
 
-std::size_t ModelStage::render(Framebuffer& frame, DepthBuffer& depth, double turn, RenderOptions options) const {
+// Hands `draw` the scene of this turn, orthographic or in perspective.
+template <typename Draw>
+std::size_t ModelStage::posed_scene(double turn, Draw draw) const {
     if (orthographic_) {
         Scene scene = *orthographic_;
         scene.objects = objects(turn);
-        return raster::render(frame, scene, depth, options);
+        return draw(scene);
     }
     PerspectiveScene scene = *perspective_;
     scene.objects = objects(turn);
-    return raster::render(frame, scene, depth, options);
+    return draw(scene);
+}
+
+std::size_t ModelStage::render(Framebuffer& frame, DepthBuffer& depth, double turn, RenderOptions options) const {
+    return posed_scene(turn, [&](const auto& scene) { return raster::render(frame, scene, depth, options); });
+}
+
+std::size_t ModelStage::render(Framebuffer& frame, Renderer& renderer, double turn) const {
+    return posed_scene(turn, [&](const auto& scene) { return renderer.render(frame, scene); });
 }
 
 std::vector<std::string> replace_diffuse_maps(Model& model, const std::shared_ptr<const Texture>& texture, const std::string& texture_name) {

@@ -70,31 +70,35 @@ std::size_t draw_shaded(const SceneObject& object, std::span<const DirectionalLi
     }
 }
 
-// The threads a render uses: the count asked for (0: one per core), at most one per row.
-int thread_count(int asked, int height) {
+// The threads a render uses: the count asked for, 0 meaning one per core, at most kMaxThreads.
+int thread_count(int asked) {
     if (asked < 0) throw std::invalid_argument("thread count must be 0 (one per core) or more, got " + std::to_string(asked));
     const int cores = static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
-    return std::clamp(asked == 0 ? cores : asked, 1, height);
+    return std::clamp(asked == 0 ? cores : asked, 1, kMaxThreads);
 }
 
-// Facets per batch of the front end: enough to keep a thread busy, few enough to share out.
-constexpr std::size_t kFacetsPerBatch = 4096;
-constexpr std::size_t kVerticesPerBatch = 8192;
+// Items per batch of the front end: about four batches a thread, each between these sizes, so
+// that a small mesh stays on one thread (waking another costs more) and a big one is shared.
+constexpr std::size_t kSmallestBatch = 2048;
+constexpr std::size_t kLargestBatch = 8192;
 
 // Clears to the background, prepares depth only when the scene needs it, and draws every object
-// in three parallel steps on a team of `options.threads` threads: its vertices posed and put
+// in three parallel steps on `team`: its vertices posed and put
 // through the front end `front_for(mesh, shader)` in batches, then its facets
 // likewise, each batch binned into strips of rows, then the strips, cleared on the first
 // object's pass and drawn with every batch's triangles in facet order.
 template <detail::Interpolation kMode, typename Camera, typename FrontFor>
 std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& scene, DepthBuffer& depth,
-                           std::optional<glm::vec3> eye, RenderOptions options, FrontFor front_for) {
-    detail::WorkerTeam team(thread_count(options.threads, framebuffer.height()));
+                           std::optional<glm::vec3> eye, detail::WorkerTeam& team, FrontFor front_for) {
     const bool depth_test = needs_depth(scene);
     if (depth_test) depth.resize(framebuffer.width(), framebuffer.height());  // each strip clears its own rows
     DepthBuffer* const tested = depth_test ? &depth : nullptr;
     const glm::vec3 to_eye = -scene.camera.direction();
     const int width = framebuffer.width(), rows = detail::strip_rows(width);
+    const auto batch_size = [&](std::size_t items) {
+        const auto share = static_cast<std::size_t>(4 * team.size());
+        return std::clamp((items + share - 1) / share, kSmallestBatch, kLargestBatch);
+    };
     const auto batches = [](std::size_t items, std::size_t per) { return static_cast<int>((items + per - 1) / per); };
     const auto range = [](int batch, std::size_t items, std::size_t per) {
         const std::size_t begin = static_cast<std::size_t>(batch) * per;
@@ -116,16 +120,17 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
             const Mesh& mesh = posing.mesh();  // sized now, filled by the batches below
             auto front = front_for(mesh, shader);
             const std::size_t vertices = mesh.positions.size(), facets = mesh.facets.size();
-            team.for_each(batches(vertices, kVerticesPerBatch), [&](int b) {
-                const auto [begin, end] = range(b, vertices, kVerticesPerBatch);
+            const std::size_t vertex_batch = batch_size(vertices), facet_batch = batch_size(facets);
+            team.for_each(batches(vertices, vertex_batch), [&](int b) {
+                const auto [begin, end] = range(b, vertices, vertex_batch);
                 posing.vertices(begin, end);
                 front.vertices(begin, end);  // reads vertex i's posed data only
             });
-            std::vector<detail::StripBins<typename Shader::Varying>> bins(static_cast<std::size_t>(batches(facets, kFacetsPerBatch)),
+            std::vector<detail::StripBins<typename Shader::Varying>> bins(static_cast<std::size_t>(batches(facets, facet_batch)),
                                                                           {framebuffer.height(), rows});
             std::vector<std::size_t> counted(bins.size());
             team.for_each(static_cast<int>(bins.size()), [&](int b) {
-                const auto [begin, end] = range(b, facets, kFacetsPerBatch);
+                const auto [begin, end] = range(b, facets, facet_batch);
                 detail::StripBins<typename Shader::Varying>& batch = bins[static_cast<std::size_t>(b)];
                 batch.reserve(end - begin);
                 posing.facets(begin, end);  // facet f reads its own posed corners and normal only
@@ -154,22 +159,42 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
     return drawn;
 }
 
-}  // namespace
-
-std::size_t render(Framebuffer& framebuffer, const Scene& scene, DepthBuffer& depth, RenderOptions options) {
+std::size_t draw(Framebuffer& framebuffer, const Scene& scene, DepthBuffer& depth, detail::WorkerTeam& team) {
     // Orthographic: attributes are linear on screen, and the direction toward the viewer is the same at every pixel.
-    return render_objects<detail::Interpolation::screen_linear>(
-        framebuffer, scene, depth, std::nullopt, options, [&](const Mesh& mesh, const auto& shader) {
-            return detail::OrthoFront(scene.camera, mesh, shader);
+    return render_objects<detail::Interpolation::screen_linear>(framebuffer, scene, depth, std::nullopt, team,
+                                                                [&](const Mesh& mesh, const auto& shader) {
+                                                                    return detail::OrthoFront(scene.camera, mesh, shader);
+                                                                });
+}
+
+std::size_t draw(Framebuffer& framebuffer, const PerspectiveScene& scene, DepthBuffer& depth, detail::WorkerTeam& team) {
+    // Phase 2 takes the direction toward the eye at every point.
+    return render_objects<detail::Interpolation::perspective>(
+        framebuffer, scene, depth, scene.camera.eye(), team, [&](const Mesh& mesh, const auto& shader) {
+            return detail::PerspectiveFront(framebuffer, scene.camera, mesh, shader, detail::kGuardBandPixels);
         });
 }
 
+}  // namespace
+
+std::size_t render(Framebuffer& framebuffer, const Scene& scene, DepthBuffer& depth, RenderOptions options) {
+    detail::WorkerTeam team(std::min(thread_count(options.threads), framebuffer.height()));
+    return draw(framebuffer, scene, depth, team);
+}
+
 std::size_t render(Framebuffer& framebuffer, const PerspectiveScene& scene, DepthBuffer& depth, RenderOptions options) {
-    // Phase 2 takes the direction toward the eye at every point.
-    return render_objects<detail::Interpolation::perspective>(
-        framebuffer, scene, depth, scene.camera.eye(), options, [&](const Mesh& mesh, const auto& shader) {
-            return detail::PerspectiveFront(framebuffer, scene.camera, mesh, shader, detail::kGuardBandPixels);
-        });
+    detail::WorkerTeam team(std::min(thread_count(options.threads), framebuffer.height()));
+    return draw(framebuffer, scene, depth, team);
+}
+
+Renderer::Renderer(RenderOptions options) : team_(std::make_unique<detail::WorkerTeam>(thread_count(options.threads))) {}
+Renderer::~Renderer() = default;
+Renderer::Renderer(Renderer&&) noexcept = default;
+Renderer& Renderer::operator=(Renderer&&) noexcept = default;
+int Renderer::threads() const noexcept { return team_->size(); }
+std::size_t Renderer::render(Framebuffer& framebuffer, const Scene& scene) { return draw(framebuffer, scene, depth_, *team_); }
+std::size_t Renderer::render(Framebuffer& framebuffer, const PerspectiveScene& scene) {
+    return draw(framebuffer, scene, depth_, *team_);
 }
 
 PerspectiveScene in_perspective(const Scene& scene, int width, int height, double fov_degrees) {

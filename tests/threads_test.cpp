@@ -89,6 +89,32 @@ TEST(Threads, ARenderReturnsTheSameFacetCountAndRefusesANegativeCount) {
     EXPECT_THROW(raster::render(image, scene, depth, {-1}), std::invalid_argument);
 }
 
+// A Renderer keeps its threads and depth buffer between frames, and draws what render() draws,
+// frame after frame, through changes of size and of camera.
+TEST(Threads, ARendererDrawsWhatRenderDrawsFrameAfterFrame) {
+    const raster::DiaryScene torus("torus");
+    for (const int threads : {1, 3}) {
+        raster::Renderer renderer({threads});
+        EXPECT_EQ(renderer.threads(), threads);
+        for (int i = 0; i < 4; ++i) {
+            const int width = kWidth + 20 * (i % 2), height = kHeight - 10 * (i % 2);  // the size changes every frame
+            const raster::Scene scene = torus.frame(width, height, 40 * i, 360);
+            Framebuffer expected(width, height), image(width, height);
+            raster::DepthBuffer depth;
+            raster::render(expected, scene, depth, {1});
+            EXPECT_EQ(renderer.render(image, scene), raster::render(expected, scene, depth, {1}));
+            EXPECT_EQ(image, expected) << "frame " << i << " on " << threads << " threads";
+            EXPECT_EQ(renderer.depth().at(width / 2, height / 2), depth.at(width / 2, height / 2));
+            const raster::PerspectiveScene wide = raster::in_perspective(scene, width, height, 60.0);
+            raster::render(expected, wide, depth, {1});
+            renderer.render(image, wide);
+            EXPECT_EQ(image, expected) << "frame " << i << " in perspective on " << threads << " threads";
+        }
+    }
+    EXPECT_THROW(raster::Renderer({-1}), std::invalid_argument);
+    EXPECT_EQ(raster::Renderer({100000}).threads(), raster::kMaxThreads);
+}
+
 TEST(Threads, ParallelAnimationsDecodeToEveryFrameAndMatchWhateverTheThreadCount) {
     std::vector<Framebuffer> frames;
     for (int i = 0; i < 12; ++i) {

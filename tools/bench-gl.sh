@@ -53,6 +53,10 @@ END {
     }
 }' "$runs" > "$out/gl.csv"
 {
+    cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1)
+    mesa=$(dpkg-query -W -f='${Version}' libosmesa6 2>/dev/null || echo unknown)
+    echo "Machine: $cpu, $(nproc) cores; $(c++ --version | head -1); Mesa (libosmesa6) $mesa; $repetitions rounds, $(date -u +%Y-%m-%d)."
+    echo
     echo "| case | size | facets | raster, 1 thread | llvmpipe, 1 thread | ratio | raster, all cores | llvmpipe, default | ratio | pixels that agree |"
     echo "|---|---|---|---|---|---|---|---|---|---|"
     awk -F, 'NR > 1 { printf "| %s | %sx%s | %s | %s | %s | %s | %s | %s | %s | %s |\n", $1, $2, $3, $4, $5, $7, $9, $6, $8, $10, ($11 == "") ? "" : sprintf("%.2f %%", 100 * $11) }' "$out/gl.csv"

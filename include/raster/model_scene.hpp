@@ -37,9 +37,13 @@ public:
     // Draws the model turned by `turn` radians about the up axis through the target: a
     // turntable's frame. Returns the facets drawn.
     std::size_t render(Framebuffer& frame, DepthBuffer& depth, double turn = 0.0, RenderOptions options = {}) const;
+    // The same with a renderer's threads and depth buffer, kept from frame to frame.
+    std::size_t render(Framebuffer& frame, Renderer& renderer, double turn = 0.0) const;
 
 private:
     [[nodiscard]] std::vector<SceneObject> objects(double turn) const;
+    template <typename Draw>
+    std::size_t posed_scene(double turn, Draw draw) const;
 
     std::shared_ptr<const Model> model_;
     std::vector<std::shared_ptr<const Mesh>> meshes_;

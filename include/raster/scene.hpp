@@ -64,11 +64,16 @@ template <typename Camera>
     return needs_depth(std::span<const SceneObject>(scene.objects));
 }
 
-// How a frame is drawn: on how many threads, each owning a band of rows. The picture is the
-// same, bit for bit, whatever the count (doc/conventions.md#threads).
+// How a frame is drawn: on how many threads, sharing its vertices, facets and strips of rows.
+// The picture is the same, bit for bit, whatever the count (doc/conventions.md#threads).
 struct RenderOptions {
-    int threads = 1;  // 0: one per core
+    int threads = 1;  // 0: one per core; counts above kMaxThreads are taken as kMaxThreads
 };
+inline constexpr int kMaxThreads = 256;
+
+namespace detail {
+class WorkerTeam;
+}
 
 // Clears to the background and draws every object; `depth` is prepared and used only when the
 // scene needs it, so a lone convex mesh never touches it. Returns the facets drawn.
@@ -77,6 +82,27 @@ std::size_t render(Framebuffer& framebuffer, const Scene& scene, DepthBuffer& de
 // attributes interpolated through 1/w, and the viewer's direction taken at each point
 // (doc/conventions.md#perspective). The camera must have the framebuffer's size.
 std::size_t render(Framebuffer& framebuffer, const PerspectiveScene& scene, DepthBuffer& depth, RenderOptions options = {});
+
+// What a run of frames keeps from one to the next: its threads, started once rather than for
+// every frame, and its depth buffer. Draws exactly what render() draws; one frame at a time.
+class Renderer {
+public:
+    // Throws std::invalid_argument for a negative thread count.
+    explicit Renderer(RenderOptions options = {});
+    ~Renderer();
+    Renderer(Renderer&&) noexcept;
+    Renderer& operator=(Renderer&&) noexcept;
+
+    std::size_t render(Framebuffer& framebuffer, const Scene& scene);
+    std::size_t render(Framebuffer& framebuffer, const PerspectiveScene& scene);
+    [[nodiscard]] int threads() const noexcept;
+    // The depth of the last frame drawn, for a scene that needed depth.
+    [[nodiscard]] const DepthBuffer& depth() const noexcept { return depth_; }
+
+private:
+    std::unique_ptr<detail::WorkerTeam> team_;
+    DepthBuffer depth_;
+};
 
 // The scene through a pinhole of vertical field of view `fov_degrees` (0 < fov < 180): the eye
 // moves back along its line of sight until the plane through the world origin keeps the
