@@ -27,12 +27,12 @@ set title "raster's frames per second over llvmpipe's, every case (above the lin
 set xlabel ""
 set ylabel "fps ratio, raster / llvmpipe"
 set style data histograms
-set style histogram clustered gap 1
+set style histogram errorbars gap 1 lw 1
 set style fill solid 0.9 border -1
 set boxwidth 0.9
 set yrange [0:*]
 set xtics rotate by -30 left
 set key top left box opaque
-plot file using 9:xticlabels(sprintf("%s %sx%s", strcol(1), strcol(2), strcol(3))) every ::1 lc "#d62728" title "1 thread each", \
-     file using 10 every ::1 lc "#ff9896" title "all cores each", \
+plot file using 9:12:13:xticlabels(sprintf("%s %sx%s", strcol(1), strcol(2), strcol(3))) every ::1 lc "#d62728" title "1 thread each (bar: median round; whisker: range)", \
+     file using 10:14:15 every ::1 lc "#ff9896" title "all cores each", \
      2 with lines dt 2 lw 2 lc "#444444" title "target, 1 thread"

@@ -12,11 +12,11 @@ repetitions="${1:-3}"
 bin=build/release/bin/raster-vs-gl
 out=doc/bench
 mkdir -p "$out"
-# case width height frames
+# case width height frames; each sweep in consecutive rows, so that the charts join its points
 cases=(
-    "torus-1 800 600 360" "torus-2 800 600 360" "torus-4 800 600 180" "torus-8 800 600 90" "torus-16 800 600 45"
-    "torus-1 1280 720 180" "torus-1 1920 1080 90" "torus-1 3840 2160 30" "torus-1 7680 4320 10"
-    "cube 800 600 360" "ptah 800 600 120" "ptah 1920 1080 60"
+    "torus-16 800 600 45" "torus-8 800 600 120" "torus-4 800 600 360" "torus-2 800 600 720"
+    "torus-1 800 600 1080" "torus-1 1280 720 540" "torus-1 1920 1080 270" "torus-1 3840 2160 60" "torus-1 7680 4320 15"
+    "cube 800 600 1440" "ptah 800 600 120" "ptah 1920 1080 60"
 )
 runs="$out/gl-runs.csv"
 echo "repetition,side,case,width,height,facets,threads,frames,seconds,fps,agreement" > "$runs"
@@ -33,23 +33,33 @@ for ((r = 1; r <= repetitions; r++)); do
         echo "bench-gl: round $r, $name ${width}x$height" >&2
     done
 done
-# Medians per case and side, then one row per case: fps of each, ratios, agreement.
+# Medians per case and side, then one row per case: fps of each, ratios, agreement. A ratio is
+# the median of the rounds' own ratios, since both sides of a round ran side by side in time.
 awk -F, 'NR > 1 {
     key = $3 "," $4 "," $5; side = $2 (($2 == "raster") ? $7 : "")
     n[key, side]++; v[key, side, n[key, side]] = $10; facets[key] = $6
     if ($11 >= 0) agree[key] = $11
     if (!(key in seen)) { seen[key] = 1; order[++keys] = key }
 }
-function median(key, side,    k, i, j, t, a) {
-    k = n[key, side]; for (i = 1; i <= k; i++) a[i] = v[key, side, i]
+function middle(a, k,    i, j, t) {
     for (i = 1; i <= k; i++) for (j = i + 1; j <= k; j++) if (a[j] < a[i]) { t = a[i]; a[i] = a[j]; a[j] = t }
     return (k % 2) ? a[(k + 1) / 2] : (a[k / 2] + a[k / 2 + 1]) / 2
 }
-BEGIN { print "case,width,height,facets,raster1,rasterN,gl1,glN,ratio1,ratioN,agreement" }
+function median(key, side,    k, i, a) {
+    k = n[key, side]; for (i = 1; i <= k; i++) a[i] = v[key, side, i]
+    return middle(a, k)
+}
+function ratio(key, top, bottom,    k, i, a) {
+    k = n[key, top]; for (i = 1; i <= k; i++) a[i] = v[key, top, i] / v[key, bottom, i]
+    m = middle(a, k); low = a[1]; high = a[k]  # middle() sorts
+    return m
+}
+BEGIN { print "case,width,height,facets,raster1,rasterN,gl1,glN,ratio1,ratioN,agreement,ratio1_low,ratio1_high,ratioN_low,ratioN_high" }
 END {
     for (o = 1; o <= keys; o++) {
         key = order[o]; r1 = median(key, "raster1"); rn = median(key, "raster0"); g1 = median(key, "gl1"); gn = median(key, "glN")
-        printf "%s,%s,%.1f,%.1f,%.1f,%.1f,%.2f,%.2f,%s\n", key, facets[key], r1, rn, g1, gn, r1 / g1, rn / gn, (key in agree) ? agree[key] : ""
+        q1 = ratio(key, "raster1", "gl1"); l1 = low; h1 = high; qn = ratio(key, "raster0", "glN"); ln = low; hn = high
+        printf "%s,%s,%.1f,%.1f,%.1f,%.1f,%.2f,%.2f,%s,%.2f,%.2f,%.2f,%.2f\n", key, facets[key], r1, rn, g1, gn, q1, qn, (key in agree) ? agree[key] : "", l1, h1, ln, hn
     }
 }' "$runs" > "$out/gl.csv"
 {
@@ -57,9 +67,11 @@ END {
     mesa=$(dpkg-query -W -f='${Version}' libosmesa6 2>/dev/null || echo unknown)
     echo "Machine: $cpu, $(nproc) cores; $(c++ --version | head -1); Mesa (libosmesa6) $mesa; $repetitions rounds, $(date -u +%Y-%m-%d)."
     echo
+    echo "Frames per second are medians; a ratio is the median of the rounds' ratios, with their range."
+    echo
     echo "| case | size | facets | raster, 1 thread | llvmpipe, 1 thread | ratio | raster, all cores | llvmpipe, default | ratio | pixels that agree |"
     echo "|---|---|---|---|---|---|---|---|---|---|"
-    awk -F, 'NR > 1 { printf "| %s | %sx%s | %s | %s | %s | %s | %s | %s | %s | %s |\n", $1, $2, $3, $4, $5, $7, $9, $6, $8, $10, ($11 == "") ? "" : sprintf("%.2f %%", 100 * $11) }' "$out/gl.csv"
+    awk -F, 'NR > 1 { printf "| %s | %sx%s | %s | %s | %s | %s (%s–%s) | %s | %s | %s (%s–%s) | %s |\n", $1, $2, $3, $4, $5, $7, $9, $12, $13, $6, $8, $10, $14, $15, ($11 == "") ? "" : sprintf("%.2f %%", 100 * $11) }' "$out/gl.csv"
 } > "$out/gl.md"
 "$bin" --side raster --case ptah --frames 1 --picture doc/images/bench-ptah >/dev/null
 if command -v gnuplot >/dev/null; then gnuplot -e "dir='$out'" bench/gl_charts.gp; fi
