@@ -116,6 +116,49 @@ raster::PerspectiveScene raster_scene(const Case& c, const std::shared_ptr<const
     return scene;
 }
 
+// Where the pixels that differ lie against the facet GL drew there, as raster snaps it: on one
+// of its horizontal edges exactly (a tie the fill rule settles), within a subpixel of an edge
+// (where GL's single-precision transform can move the edge across the centre), or farther.
+struct Disagreements {
+    long horizontal_tie = 0, near_edge = 0, elsewhere = 0, gl_background = 0;
+    void add(const raster::PerspectiveCamera& camera, const raster::Mesh& posed, int x, int y, raster::Rgb gl_id) {
+        const std::uint32_t id = (std::uint32_t{gl_id.r} << 16) | (std::uint32_t{gl_id.g} << 8) | gl_id.b;
+        if (id == 0) {
+            ++gl_background;
+            return;
+        }
+        std::array<glm::dvec2, 3> at{};
+        for (std::size_t k = 0; k < 3; ++k) {
+            const std::optional<raster::SubpixelPoint> p =
+                raster::snap_to_subpixel(camera.screen_from_clip(camera.clip_from_world(posed.positions[posed.facets[id - 1].corners[k]])));
+            if (!p) {
+                ++elsewhere;
+                return;
+            }
+            at[k] = {p->x, p->y};
+        }
+        const glm::dvec2 centre(x * raster::kSubpixelOne, y * raster::kSubpixelOne);
+        double nearest = 1e300;
+        bool horizontal = false;
+        for (std::size_t k = 0; k < 3; ++k) {
+            const glm::dvec2 along = at[(k + 1) % 3] - at[k];
+            const double distance = std::abs(along.x * (centre.y - at[k].y) - along.y * (centre.x - at[k].x)) / glm::length(along);
+            if (distance < nearest) nearest = distance, horizontal = along.y == 0.0;
+        }
+        if (nearest == 0.0 && horizontal) {
+            ++horizontal_tie;
+        } else if (nearest <= 1.0) {
+            ++near_edge;
+        } else {
+            ++elsewhere;
+        }
+    }
+    void print() const {
+        std::fprintf(stderr, "pixels apart: %ld on a horizontal edge exactly, %ld within a subpixel of an edge, %ld farther, %ld background in GL\n",
+                     horizontal_tie, near_edge, elsewhere, gl_background);
+    }
+};
+
 class GlContext {
 public:
     GlContext(int width, int height) : width_(width), height_(height), pixels_(static_cast<std::size_t>(width) * height * 4) {
@@ -332,7 +375,7 @@ int main(int argc, char** argv) {
     CLI::App app("Times one side of raster against Mesa's software OpenGL (tools/bench-gl.sh runs both, interleaved).", "raster-vs-gl");
     std::string side = "raster", name = "torus-1";
     int width = 800, height = 600, frames = 360, threads = 1;
-    bool agreement = false;
+    bool agreement = false, explain = false;
     std::string picture;
     app.add_option("--side", side, "raster or gl")->check(CLI::IsMember({"raster", "gl"}));
     app.add_option("--case", name, "torus-D (torus(24 D, 16 D)), cube, or ptah (the textured seed scene)");
@@ -341,6 +384,7 @@ int main(int argc, char** argv) {
     app.add_option("--frames", frames)->check(CLI::Range(1, 100000));
     app.add_option("--threads", threads, "raster's threads (GL's come from LP_NUM_THREADS)")->check(CLI::Range(0, 256));
     app.add_flag("--agreement", agreement, "Also draw every 30th frame unlit on both sides and report the share of covered pixels that agree");
+    app.add_flag("--explain", explain, "With --agreement: sort the pixels where the two differ by how near GL's facet's edge they lie");
     app.add_option("--picture", picture, "Also write the first frame from both sides to PREFIX-raster.webp and PREFIX-gl.webp")
         ->option_text("PREFIX");
     CLI11_PARSE(app, argc, argv);
@@ -383,6 +427,7 @@ int main(int argc, char** argv) {
                 colours.insert(colours.end(), {static_cast<std::uint8_t>(id >> 16), static_cast<std::uint8_t>(id >> 8), static_cast<std::uint8_t>(id)});
             }
             long covered = 0, same = 0;
+            Disagreements why_apart;
             for (int i = 0; i < frames; i += 30) {
                 gl_frame(c, ids, &colours, i, frames);
                 const raster::PerspectiveCamera camera = raster::PerspectiveCamera::look_at(width, height, kEye, glm::vec3(0), {0, 1, 0}, kLens);
@@ -396,10 +441,12 @@ int main(int argc, char** argv) {
                         if (a == raster::Rgb{} && b == raster::Rgb{}) continue;
                         ++covered;
                         same += a == b ? 1 : 0;
+                        if (explain && a != b) why_apart.add(camera, posed, x, y, b);
                     }
                 }
             }
             agree = covered > 0 ? static_cast<double>(same) / static_cast<double>(covered) : 1.0;
+            if (explain) why_apart.print();
         }
         if (agreement && textured) {
             // Lit and filtered, the two cannot match exactly: the share of the model's pixels

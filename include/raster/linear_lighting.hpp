@@ -111,7 +111,8 @@ public:
     };
     [[nodiscard]] Received received(glm::vec3 position, glm::vec3 normal) const noexcept {
         if (glm::dot(normal, normal) == 0.0F) return {};
-        const glm::vec3 to_eye = eye_ ? toward_point(*eye_, position).unit : to_eye_;
+        // Only highlights look toward the eye: a matte surface skips the square root.
+        const glm::vec3 to_eye = eye_ && power_.enabled() ? toward_point(*eye_, position).unit : to_eye_;
         float diffuse = 0.0F, specular = 0.0F;
         for (const PreparedLight& light : directional_) {
             diffuse += light.intensity * std::max(0.0F, glm::dot(normal, light.toward));
