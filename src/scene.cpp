@@ -94,7 +94,7 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
     if (depth_test) depth.resize(framebuffer.width(), framebuffer.height());  // each strip clears its own rows
     DepthBuffer* const tested = depth_test ? &depth : nullptr;
     const glm::vec3 to_eye = -scene.camera.direction();
-    const int width = framebuffer.width(), rows = detail::strip_rows(width);
+    const detail::StripLayout layout = detail::StripLayout::of(framebuffer.width(), framebuffer.height());
     const auto batch_size = [&](std::size_t items) {
         const auto share = static_cast<std::size_t>(4 * team.size());
         return std::clamp((items + share - 1) / share, kSmallestBatch, kLargestBatch);
@@ -127,7 +127,7 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
                 front.vertices(begin, end);  // reads vertex i's posed data only
             });
             std::vector<detail::StripBins<typename Shader::Varying>> bins(static_cast<std::size_t>(batches(facets, facet_batch)),
-                                                                          {framebuffer.height(), rows});
+                                                                          detail::StripBins<typename Shader::Varying>(layout));
             std::vector<std::size_t> counted(bins.size());
             team.for_each(static_cast<int>(bins.size()), [&](int b) {
                 const auto [begin, end] = range(b, facets, facet_batch);
@@ -137,9 +137,8 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
                 counted[static_cast<std::size_t>(b)] = front.facets(begin, end, [&](const auto& corners) { batch.add(corners); });
                 batch.finish();
             });
-            const int strips = (framebuffer.height() + rows - 1) / rows;
-            team.for_each(strips, [&](int s) {
-                const PixelRect strip{0, s * rows, width, std::min(rows, framebuffer.height() - s * rows)};
+            team.for_each(layout.count(), [&](int s) {
+                const PixelRect strip = layout.strip(s);
                 if (!cleared) clear(strip);
                 for (const auto& batch : bins) {
                     batch.for_each_in(s, [&](const auto& corners) {
@@ -152,9 +151,7 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
         });
     }
     if (!cleared) {
-        team.for_each((framebuffer.height() + rows - 1) / rows, [&](int s) {
-            clear({0, s * rows, width, std::min(rows, framebuffer.height() - s * rows)});
-        });
+        team.for_each(layout.count(), [&](int s) { clear(layout.strip(s)); });
     }
     return drawn;
 }

@@ -73,7 +73,7 @@ enum class Interpolation { screen_linear, perspective };
 
 // Fills one triangle facing the camera. Varying needs +, - and * float; corner 0 anchors the
 // interpolation (v0 + w1 (v1 - v0) + w2 (v2 - v0)), so equal corners give that value exactly.
-// `rows`, when given, limits the writes to a band of rows: what one thread of a banded render owns.
+// `rows`, when given, limits the writes to a band of rows: one strip of a render in strips.
 template <typename Shader, typename DepthFormat = FloatDepth, Interpolation kMode = Interpolation::screen_linear>
 void shade_triangle(Framebuffer& colour, DepthBuffer* depth,
                     const std::array<ShadedCorner<typename Shader::Varying>, 3>& corners, const Shader& shader,
@@ -224,7 +224,7 @@ typename Shader::Varying vertex_varying(const Shader& shader, const Mesh& mesh, 
 }
 
 // Whether a triangle's corners leave every pixel centre of a band of rows above or below them,
-// so that a banded render can skip it before any shading work.
+// so that drawing into that band can skip it before any shading work.
 inline bool misses_rows(const std::array<SubpixelPoint, 3>& points, const PixelRect& rows) noexcept {
     const std::int32_t low = std::min({points[0].y, points[1].y, points[2].y});
     const std::int32_t high = std::max({points[0].y, points[1].y, points[2].y});

@@ -23,6 +23,16 @@ inline int strip_rows(int width) noexcept {
     return rows;
 }
 
+// How a frame is cut into strips: strip_rows(width) rows each, the last strip what is left.
+struct StripLayout {
+    int width;
+    int height;
+    int rows;
+    [[nodiscard]] static StripLayout of(int width, int height) noexcept { return {width, height, strip_rows(width)}; }
+    [[nodiscard]] int count() const noexcept { return (height + rows - 1) / rows; }
+    [[nodiscard]] PixelRect strip(int s) const noexcept { return {0, s * rows, width, std::min(rows, height - s * rows)}; }
+};
+
 inline std::int32_t floor_div(std::int32_t a, std::int32_t b) noexcept { return a / b - ((a % b != 0) && ((a < 0) != (b < 0))); }
 
 // The rows whose pixel centres lie between a triangle's lowest and highest corner, clamped to
@@ -52,13 +62,8 @@ class StripBins {
 public:
     using Triangle = std::array<ShadedCorner<Varying>, 3>;
 
-    StripBins(int height, int rows_per_strip)
-        : height_(height), rows_(rows_per_strip), starts_(static_cast<std::size_t>(strips() + 1), 0) {}
-
-    [[nodiscard]] int strips() const noexcept { return (height_ + rows_ - 1) / rows_; }
-    [[nodiscard]] PixelRect strip(int s, int width) const noexcept {
-        return {0, s * rows_, width, std::min(rows_, height_ - s * rows_)};
-    }
+    explicit StripBins(const StripLayout& layout)
+        : height_(layout.height), rows_(layout.rows), starts_(static_cast<std::size_t>(layout.count() + 1), 0) {}
 
     // Room for this many triangles: a facet is one unless clipping splits it.
     void reserve(std::size_t triangles) {

@@ -18,7 +18,7 @@ namespace raster {
 struct RenderTarget {
     Framebuffer& colour;
     DepthBuffer* depth = nullptr;
-    // The band of rows to draw into, for one thread of a banded render; nothing: every row.
+    // The band of rows to draw into, such as one strip of a frame; nothing: every row.
     std::optional<PixelRect> rows = std::nullopt;
 };
 
