@@ -129,7 +129,8 @@ void add_export_options(CLI::App& app, ExportOptions& options) {
     add_integer_option(app, "--width", options.width, 1, raster::kMaxImageSide, "Image width " + side);
     add_integer_option(app, "--height", options.height, 1, raster::kMaxImageSide, "Image height " + side);
     add_integer_option(app, "--threads", options.threads, 0, 256,
-                       "Threads for rendering (each a band of rows) and for encoding animation frames, 0..256; 0 (the "
+                       "Threads for rendering (sharing each frame's vertices, facets and "
+                       "strips of rows) and for encoding animation frames, 0..256; 0 (the "
                        "default) takes one per core. The picture is the same whatever the count");
     add_output_options(app, options);
 }
