@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <cstdio>
 #include <cerrno>
 #include <charconv>
 #include <cstring>
@@ -85,6 +87,34 @@ CLI::Option* add_integer_option(CLI::App& app, const std::string& name, int& val
     return app.add_option(name, value, help)
         ->transform(decimal_in_range)
         ->option_text("N [" + std::to_string(value) + "]");
+}
+
+CLI::Validator finite_number(double low, double high, bool open_ends, const std::string& unit) {
+    const auto shown = [](double value) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%g", value);
+        return std::string(text);
+    };
+    std::string range;
+    if (low == 0.0 && std::isinf(high)) {
+        range = open_ends ? "must be positive" : "must not be negative";
+    } else if (!std::isinf(low) || !std::isinf(high)) {
+        range = "must be " + std::string(open_ends ? "strictly " : "") + "between " + shown(low) + " and " + shown(high) + unit;
+    }
+    return {[=](std::string& given) -> std::string {
+                std::string_view digits = given;
+                if (digits.size() > 1 && digits[0] == '+' && digits[1] != '-') digits.remove_prefix(1);
+                double value = 0.0;
+                const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+                const std::string quoted = "'" + raster::printable(given, 40) + "'";
+                if (digits.empty() || end != digits.data() + digits.size() || (error != std::errc() && error != std::errc::result_out_of_range)) {
+                    return quoted + " is not a number";
+                }
+                if (error == std::errc::result_out_of_range || !std::isfinite(value)) return "must be finite, not " + quoted;
+                const bool inside = open_ends ? value > low && value < high : value >= low && value <= high;
+                return inside ? std::string() : range + ", not " + quoted;
+            },
+            "", ""};
 }
 
 CLI::Validator one_of(const std::vector<std::string>& names) {
@@ -189,7 +219,7 @@ void check_output(const CLI::App& app, const ExportOptions& options) {
         }
         return;
     }
-    raster::check_output_path(options.output, options.policy);
+    raster::check_output_path(options.output, options.policy, options.inputs);
     const std::string extension = std::filesystem::path(options.output).extension().string();
     std::string lowered = extension;
     std::transform(lowered.begin(), lowered.end(), lowered.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
@@ -201,7 +231,7 @@ void check_output(const CLI::App& app, const ExportOptions& options) {
 
 void deliver(const ExportOptions& options, std::span<const std::uint8_t> bytes) {
     if (options.output != "-") {
-        raster::write_output_file(options.output, bytes, options.policy);
+        raster::write_output_file(options.output, bytes, options.policy, options.inputs);
         return;
     }
     while (!bytes.empty()) {

@@ -27,6 +27,7 @@ struct ExportOptions {
     raster::OutputPolicy policy;
     raster::AnimationPath encoder = raster::AnimationPath::parallel;
     int threads = 0;  // for rendering bands and encoding frames; 0: one per core
+    std::vector<raster::InputRecord> inputs;  // every file read: no output may replace one
 
     [[nodiscard]] raster::RenderOptions render_options() const { return {threads}; }
 };
@@ -41,6 +42,9 @@ void add_export_options(CLI::App& app, ExportOptions& options);
 // A decimal integer in [low, high]; anything else is a usage error that says so.
 CLI::Option* add_integer_option(CLI::App& app, const std::string& name, int& value, int low, int high,
                                 const std::string& help);
+// A decimal number that is finite and within [low, high] (both ends open when `open_ends`); the
+// error says in the option's terms what is wrong ("must be finite", "must be positive").
+CLI::Validator finite_number(double low, double high, bool open_ends = false, const std::string& unit = "");
 // Accepts only one of `names` (any case) and lower-cases it; the error lists the names.
 CLI::Validator one_of(const std::vector<std::string>& names);
 
@@ -82,7 +86,8 @@ private:
     bool line_open_ = false;
 };
 
-// Fails early (a bad path, stdout on a terminal) and warns once about a name not ending in .webp.
+// Fails early (a bad path, an input of this run, stdout on a terminal) and warns once about a
+// name not ending in .webp.
 void check_output(const CLI::App& app, const ExportOptions& options);
 // Writes the finished bytes to the output file (atomically) or to standard output.
 void deliver(const ExportOptions& options, std::span<const std::uint8_t> bytes);

@@ -5,6 +5,7 @@
 #include <raster/texture_file.hpp>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -21,6 +22,7 @@ void add_point_option(CLI::App& app, const std::string& name, std::optional<glm:
            name, [&point](const std::vector<double>& xyz) { point = glm::dvec3(xyz[0], xyz[1], xyz[2]); }, help)
         ->expected(3)
         ->delimiter(',')
+        ->check(finite_number(-HUGE_VAL, HUGE_VAL))
         ->option_text("X,Y,Z");
 }
 
@@ -66,14 +68,14 @@ int main(int argc, char** argv) {
     std::optional<glm::dvec3> up;
     add_point_option(app, "--up", up, "The direction that is up on screen, and the turntable's axis [0,1,0]");
     app.add_option("--fov", view.fov_degrees, "Vertical field of view in degrees, between 0 and 180 [40]")
-        ->check(CLI::Range(0.001, 179.999))
+        ->check(finite_number(0.0, 180.0, true, " degrees"))
         ->option_text("DEGREES");
     app.add_flag("--ortho", view.orthographic, "Orthographic projection: the bounding sphere fills the shorter side");
     app.add_option("--near", view.near, "Distance to the near clipping plane, in model units. Default: just short of the model")
-        ->check(CLI::PositiveNumber)
+        ->check(finite_number(0.0, HUGE_VAL, true))
         ->option_text("DISTANCE");
     app.add_option("--far", view.far, "Distance to the far clipping plane, in model units. Default: just beyond the model")
-        ->check(CLI::PositiveNumber)
+        ->check(finite_number(0.0, HUGE_VAL, true))
         ->option_text("DISTANCE");
     int frames = 0;
     add_integer_option(app, "--turntable", frames, 0, 10000,
@@ -106,8 +108,14 @@ int main(int argc, char** argv) {
     raster::ObjOptions obj;
     app.add_option("--crease", obj.crease_degrees,
                    "Normals the model lacks are smoothed across edges gentler than this angle and creased at sharper ones; 0 makes every facet flat [60]")
-        ->check(CLI::Range(0.0, 180.0))
+        ->check(finite_number(0.0, 180.0, false, " degrees"))
         ->option_text("DEGREES");
+    std::string confine;
+    app.add_option("--confine", confine,
+                   "Read nothing outside DIR (after resolving .. and symbolic links): the model must lie inside it, and "
+                   "material libraries and textures the model names outside it are treated as missing, with a warning. "
+                   "For models you did not make (README: Rendering models you did not make)")
+        ->option_text("DIR");
 
     return run_exporter(app, options, argc, argv, [&] {
         const auto start = std::chrono::steady_clock::now();
@@ -115,9 +123,12 @@ int main(int argc, char** argv) {
         if (up) view.up = *up;
         view.light = light;
         if (!background.empty()) view.background = colour_from_hex(background);
+        if (!confine.empty()) obj.confine = raster::confinement_root(confine);
         raster::Model model = raster::read_obj(model_path, obj);
+        options.inputs = model.sources;
         if (!texture_path.empty()) {
-            const auto texture = std::make_shared<const raster::Texture>(raster::read_texture(texture_path));
+            const auto texture = std::make_shared<const raster::Texture>(
+                raster::read_texture(texture_path, raster::kMaxTextureTexels, obj.confine, &options.inputs));
             for (std::string& warning : raster::replace_diffuse_maps(model, texture, texture_path)) model.warnings.push_back(warning);
         }
         for (raster::ModelPart& part : model.parts) part.sampler.filter = filter;

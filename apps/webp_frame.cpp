@@ -21,6 +21,8 @@ int main(int argc, char** argv) {
     add_output_options(app, options);
 
     return run_exporter(app, options, argc, argv, [&] {
+        // The input's identity before it is read, so that naming it as the output fails at once.
+        if (raster::FileIdentity identity; raster::identity_of(input, identity)) options.inputs.push_back({input, identity, "animation"});
         check_output(app, options);
         std::optional<raster::Framebuffer> found;
         int seen = 0;
@@ -28,7 +30,7 @@ int main(int argc, char** argv) {
             if (seen++ < index) return true;
             found = frame.image;
             return false;
-        });
+        }, &options.inputs);
         if (!found) {
             throw std::runtime_error("'" + input + "' has " + std::to_string(info.frame_count) +
                                      " frame(s), numbered 0.." + std::to_string(info.frame_count - 1));
@@ -36,7 +38,7 @@ int main(int argc, char** argv) {
         const std::vector<std::uint8_t> bytes = raster::encode_webp_still(*found, options.effort);
         deliver(options, bytes);
         return "Wrote " + (options.output == "-" ? std::string("standard output") : options.output) + ": frame " +
-               std::to_string(index) + " of " + input + ", " + std::to_string(info.width) + "x" +
+               std::to_string(index) + " of " + raster::printable(input) + ", " + std::to_string(info.width) + "x" +
                std::to_string(info.height) + ", " + std::to_string(bytes.size()) + " bytes";
     });
 }

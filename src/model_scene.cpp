@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
@@ -34,6 +35,16 @@ glm::dvec3 three_quarter_direction(glm::dvec3 up) {
     return std::cos(above) * (std::cos(around) * front + std::sin(around) * right) + std::sin(above) * u;
 }
 
+// A number as people write it (%g), for messages.
+std::string shown(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", value);
+    return text;
+}
+
+// The lens limits of PerspectiveCamera, in unit-sphere distances.
+constexpr double kNearest = 1e-18, kFarthest = 1e18;
+
 }  // namespace
 
 ModelStage::ModelStage(std::shared_ptr<const Model> model, const ModelView& view, int width, int height)
@@ -43,7 +54,7 @@ ModelStage::ModelStage(std::shared_ptr<const Model> model, const ModelView& view
     const double radius = bounds.radius;
     const glm::dvec3 centre = bounds.centre();
     if (!(radius > 0.0) || !(radius < kLargestRadius) || !finite(centre)) {
-        throw std::invalid_argument("the model is too large (or too flat) to frame: bounding radius " + std::to_string(radius));
+        throw std::invalid_argument("the model is too large (or too flat) to frame: bounding radius " + shown(radius));
     }
     // Positions moved into the unit sphere in double, so a model far from the origin keeps its detail.
     const auto unit_from_world = [&](glm::dvec3 p) { return (p - centre) / radius; };
@@ -55,7 +66,7 @@ ModelStage::ModelStage(std::shared_ptr<const Model> model, const ModelView& view
     }
     if (!finite(view.up) || glm::length(view.up) == 0.0) throw std::invalid_argument("the up direction must be a non-zero vector");
     if (!(view.fov_degrees > 0.0 && view.fov_degrees < 180.0)) {
-        throw std::invalid_argument("field of view must be between 0 and 180 degrees, got " + std::to_string(view.fov_degrees));
+        throw std::invalid_argument("field of view must be between 0 and 180 degrees, got " + shown(view.fov_degrees));
     }
     up_ = glm::normalize(mirrored(view.up));
     target_ = view.target ? unit_from_file(*view.target) : glm::dvec3(0.0);
@@ -72,6 +83,10 @@ ModelStage::ModelStage(std::shared_ptr<const Model> model, const ModelView& view
     }
     if (!finite(eye) || !finite(target_)) throw std::invalid_argument("eye and target must be finite points");
 
+    if (!(glm::length(target_ - eye) > 1e-12)) {
+        throw std::invalid_argument(view.target ? "--eye and --target are the same point; the camera needs a direction to look in"
+                                                : "--eye is the middle of the model, where the camera looks; move it, or give --target");
+    }
     // The camera's axes, for the default lights: forward, right and up as the camera sees them.
     const glm::dvec3 forward = glm::normalize(target_ - eye);
     const glm::dvec3 side = glm::cross(up_, forward);
@@ -91,13 +106,22 @@ ModelStage::ModelStage(std::shared_ptr<const Model> model, const ModelView& view
         return;
     }
     if (view.near && view.far && !(*view.near < *view.far)) {
-        throw std::invalid_argument("--near must be less than --far, got " + std::to_string(*view.near) + " and " + std::to_string(*view.far));
+        throw std::invalid_argument("--near must be less than --far, got " + shown(*view.near) + " and " + shown(*view.far));
     }
     // Near and far hold the sphere, wherever the turn about the target takes it.
     const double reach = 1.0 + 2.0 * glm::length(target_);
     const double from_centre = glm::length(eye);
     const double near = view.near ? *view.near / radius : std::max((from_centre - reach) * 0.9, 1e-3);
     const double far = view.far ? *view.far / radius : (from_centre + reach) * 1.1;
+    if (!(near >= kNearest)) throw std::invalid_argument("--near must be at least " + shown(kNearest * radius) + " for a model of this size");
+    if (!(far <= kFarthest)) {
+        throw std::invalid_argument(view.far ? "--far must be at most " + shown(kFarthest * radius) + " for a model of this size"
+                                             : "--eye is too far from the model to draw it in perspective; move it closer, or add --ortho");
+    }
+    if (!(far > near)) {
+        throw std::invalid_argument(view.far ? "--far ends before the model begins; give a larger --far, or a --near before it"
+                                             : "--near lies beyond the model; give a smaller --near, or a --far beyond it");
+    }
     const PerspectiveCamera::Lens lens{view.fov_degrees, near, far};
     perspective_ = PerspectiveScene{PerspectiveCamera::look_at(width, height, glm::vec3(eye), glm::vec3(target_), glm::vec3(up_), lens),
                               view.background, lights, {}, {}};

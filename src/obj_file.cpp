@@ -1,12 +1,16 @@
 // The only file that includes tinyobjloader.
 #include <raster/obj_file.hpp>
 
+#include "input_stream.hpp"
 #include "model_builder.hpp"
+#include "obj_survey.hpp"
+#include "polygon_triangles.hpp"
+
+#include <raster/input_file.hpp>
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <optional>
 #include <sstream>
@@ -25,124 +29,100 @@ struct BadModel : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-// Opens a model or material file after the checks a stream would not make.
-std::ifstream open_checked(const std::filesystem::path& path) {
-    std::error_code error;
-    if (std::filesystem::is_directory(path, error)) throw BadModel("is a directory, not a file");
-    const std::uintmax_t size = std::filesystem::file_size(path, error);
-    if (error) throw BadModel("cannot read: " + error.message());
-    if (size > kMaxModelFileBytes) throw BadModel("file is larger than " + std::to_string(kMaxModelFileBytes >> 20) + " MiB");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw BadModel("cannot open the file");
-    return in;
+// Binary files people pass by mistake (images, glTF, archives, programs) are refused from their
+// first bytes; OBJ and MTL have no signature of their own.
+bool not_binary(std::span<const std::uint8_t> head) {
+    const auto starts = [&](std::string_view magic) {
+        return head.size() >= magic.size() &&
+               std::equal(magic.begin(), magic.end(), head.begin(), [](char m, std::uint8_t b) { return static_cast<std::uint8_t>(m) == b; });
+    };
+    return !(starts("\x89PNG") || starts("\xFF\xD8\xFF") || starts("GIF8") || starts("RIFF") || starts("glTF") ||
+             starts("PK\x03\x04") || starts("\x7F" "ELF"));
+}
+
+InputRules text_rules(std::string role, std::string expected, const std::filesystem::path& confine) {
+    InputRules rules;
+    rules.role = std::move(role);
+    rules.max_bytes = kMaxModelFileBytes;
+    rules.signature = not_binary;
+    rules.signature_bytes = 8;
+    rules.expected = std::move(expected);
+    rules.confine = confine;
+    return rules;
+}
+
+// The line the survey found a name on, for warnings; 0 when unknown.
+std::size_t line_of(const std::vector<detail::NamedAt>& list, std::string_view name) {
+    for (const detail::NamedAt& named : list) {
+        if (named.name == name) return named.line;
+    }
+    return 0;
 }
 
 // Reads each MTL file the OBJ names, from beside the OBJ (or from text given in memory), and
 // remembers which directory every material came from, for its texture paths.
 class MaterialLibraries final : public tinyobj::MaterialReader {
 public:
-    MaterialLibraries(std::filesystem::path directory, std::optional<std::string_view> text)
-        : directory_(std::move(directory)), text_(text) {}
+    MaterialLibraries(std::filesystem::path directory, std::optional<std::string_view> text, std::string obj_name,
+                      const detail::ObjSurvey& survey, const ObjOptions& options)
+        : directory_(std::move(directory)), text_(text), obj_name_(std::move(obj_name)), survey_(survey), options_(options) {}
 
     bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials, std::map<std::string, int>* names,
-                    std::string* warn, std::string* err) override {
-        const std::size_t before = materials->size();
+                    std::string*, std::string*) override {
         const std::filesystem::path path = directory_ / name;
+        std::string ignored_warnings, ignored_errors;  // LoadMtl's only warning is about d and Tr, both read anyway
         if (text_) {
             std::istringstream in{std::string(*text_)};
-            tinyobj::LoadMtl(names, materials, &in, warn, err);
+            tinyobj::LoadMtl(names, materials, &in, &ignored_warnings, &ignored_errors);
         } else {
             try {
-                std::ifstream in = open_checked(path);
-                tinyobj::LoadMtl(names, materials, &in, warn, err);
-            } catch (const BadModel& problem) {
-                warnings_.push_back(path.string() + ": " + problem.what() + "; drawing the default material");
+                InputFile file(path, text_rules("material library", "an MTL text file", options_.confine));
+                for_each_line(file, path.string(), kMaxObjLineBytes, [](std::string_view, std::size_t) {});
+                detail::InputStreamBuf buffer(file);
+                std::istream in(&buffer);
+                tinyobj::LoadMtl(names, materials, &in, &ignored_warnings, &ignored_errors);
+                sources_.push_back(file.record());
+            } catch (const std::runtime_error& problem) {
+                const std::size_t line = line_of(survey_.libraries, name);
+                const std::string at = line > 0 ? obj_name_ + ":" + std::to_string(line) + ": " : obj_name_ + ": ";
+                warnings_.push_back(at + "material library '" + printable(path.string()) + "' " + problem.what() +
+                                    "; drawing the default material");
+                failed_ = true;
                 return false;
             }
         }
         directories_.resize(materials->size(), path.parent_path());
-        return materials->size() >= before;
+        return true;
     }
     [[nodiscard]] const std::filesystem::path& directory_of(std::size_t material) const { return directories_.at(material); }
     [[nodiscard]] const std::vector<std::string>& warnings() const noexcept { return warnings_; }
+    [[nodiscard]] std::vector<InputRecord>& sources() noexcept { return sources_; }
+    [[nodiscard]] bool any_failed() const noexcept { return failed_; }
 
 private:
     std::filesystem::path directory_;
     std::optional<std::string_view> text_;
+    std::string obj_name_;
+    const detail::ObjSurvey& survey_;
+    const ObjOptions& options_;
     std::vector<std::filesystem::path> directories_;
     std::vector<std::string> warnings_;
+    std::vector<InputRecord> sources_;
+    bool failed_ = false;
 };
-
-// Every distinct line of tinyobjloader's message, each one a warning ("." alone is its stray
-// full stop after "Degenerated face found").
-void add_lines(std::vector<std::string>& warnings, const std::string& prefix, const std::string& text) {
-    std::istringstream lines(text);
-    for (std::string line; std::getline(lines, line);) {
-        if (line.empty() || line == ".") continue;
-        const std::string warning = prefix + line;
-        if (std::find(warnings.begin(), warnings.end(), warning) == warnings.end()) warnings.push_back(warning);
-    }
-}
-
-// One index of a face corner, OBJ's way: 1 is the first defined so far, -1 the last one.
-// Returns an error message, or "" when the index names something defined before the face.
-std::string check_index(std::string_view text, std::size_t defined, const char* what) {
-    long long value = 0;
-    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (error != std::errc() || end != text.data() + text.size()) return "'" + std::string(text) + "' is not a " + what + " index";
-    if (value == 0) return std::string(what) + " index 0: OBJ counts from 1";
-    const long long resolved = value > 0 ? value : static_cast<long long>(defined) + value + 1;
-    if (resolved < 1 || resolved > static_cast<long long>(defined)) {
-        return "face names " + std::string(what) + " " + std::to_string(value) + ", but " + std::to_string(defined) +
-               (defined == 1 ? " is" : " are") + " defined before it";
-    }
-    return "";
-}
-
-// Reads the OBJ once before tinyobjloader does, line by line, so that a face naming what the file
-// does not define is an error with its line (tinyobjloader would drop it with a warning), and a
-// face of more corners than kMaxFaceCorners is refused before its splitting takes quadratic time.
-void check_faces(std::istream& in, const std::string& name) {
-    std::size_t vertices = 0, uvs = 0, normals = 0, number = 0;
-    for (std::string line; std::getline(in, line);) {
-        ++number;
-        std::istringstream words(line);
-        std::string keyword;
-        if (!(words >> keyword)) continue;
-        if (keyword == "v") ++vertices;
-        if (keyword == "vt") ++uvs;
-        if (keyword == "vn") ++normals;
-        if (keyword != "f") continue;
-        std::size_t corners = 0;
-        for (std::string corner; words >> corner;) {
-            if (++corners > kMaxFaceCorners) {
-                throw std::runtime_error(name + ":" + std::to_string(number) + ": a face of more than " + std::to_string(kMaxFaceCorners) +
-                                         " corners");
-            }
-            const std::size_t slash = corner.find('/'), second = slash == std::string::npos ? slash : corner.find('/', slash + 1);
-            const std::string_view view(corner);
-            std::string problem = check_index(view.substr(0, slash), vertices, "vertex");
-            if (problem.empty() && slash != std::string::npos) {
-                const std::string_view uv = view.substr(slash + 1, second == std::string::npos ? std::string_view::npos : second - slash - 1);
-                if (!uv.empty()) problem = check_index(uv, uvs, "texture coordinate");
-                if (problem.empty() && second != std::string::npos) problem = check_index(view.substr(second + 1), normals, "normal");
-            }
-            if (!problem.empty()) throw std::runtime_error(name + ":" + std::to_string(number) + ": " + problem);
-        }
-    }
-}
 
 // Checks one index of a face corner against the count of what it names.
 std::int64_t checked(int index, std::size_t count, const char* what, std::size_t face, bool optional) {
     if (index < 0 && optional) return detail::kNoIndex;
     if (index < 0 || static_cast<std::size_t>(index) >= count) {
-        throw BadModel("triangle " + std::to_string(face + 1) + " names " + what + " " + std::to_string(index + 1) + ", but the file has " +
+        throw BadModel("face " + std::to_string(face + 1) + " names " + what + " " + std::to_string(index + 1) + ", but the file has " +
                        std::to_string(count));
     }
     return index;
 }
 
-// Positions and normals mirrored into raster's left-handed world; corners re-wound to match.
+// Positions and normals mirrored into raster's left-handed world; each face split into exactly
+// its own area and every piece re-wound to match.
 detail::PolygonSoup soup_from(const tinyobj::attrib_t& attrib, const std::vector<tinyobj::shape_t>& shapes, std::size_t& skipped) {
     detail::PolygonSoup soup;
     for (std::size_t i = 0; i + 2 < attrib.vertices.size(); i += 3) {
@@ -153,32 +133,38 @@ detail::PolygonSoup soup_from(const tinyobj::attrib_t& attrib, const std::vector
     }
     for (std::size_t i = 0; i + 1 < attrib.texcoords.size(); i += 2) soup.uvs.emplace_back(attrib.texcoords[i], attrib.texcoords[i + 1]);
     std::size_t face = 0;
+    std::vector<detail::SoupCorner> corners;
+    std::vector<glm::dvec3> outline;
     for (const tinyobj::shape_t& shape : shapes) {
         std::size_t next = 0;
         for (std::size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f, ++face) {
             const std::size_t count = shape.mesh.num_face_vertices[f];
             const std::size_t first = next;
             next += count;
-            if (next > shape.mesh.indices.size()) throw BadModel("triangle " + std::to_string(face + 1) + " is cut short");
+            if (next > shape.mesh.indices.size()) throw BadModel("face " + std::to_string(face + 1) + " is cut short");
             if (count < 3) {  // tinyobjloader drops these itself; kept as a guard
                 ++skipped;
                 continue;
             }
-            std::vector<detail::SoupCorner> corners;
+            corners.clear();
+            outline.clear();
             for (std::size_t k = first; k < next; ++k) {
                 const tinyobj::index_t& index = shape.mesh.indices[k];
                 const detail::SoupCorner corner{checked(index.vertex_index, soup.positions.size(), "vertex", face, false),
                                                 checked(index.normal_index, soup.normals.size(), "normal", face, true),
                                                 checked(index.texcoord_index, soup.uvs.size(), "texture coordinate", face, true)};
                 const glm::vec3& p = soup.positions[static_cast<std::size_t>(corner.position)];
-                if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+                if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {  // the survey refuses these first
                     throw BadModel("vertex " + std::to_string(corner.position + 1) + " is not a finite point");
                 }
                 corners.push_back(corner);
+                outline.emplace_back(p);
             }
             const int material = f < shape.mesh.material_ids.size() ? shape.mesh.material_ids[f] : -1;
-            // A fan, each piece turned from OBJ's counter-clockwise to raster's clockwise order.
-            for (std::size_t k = 1; k + 1 < corners.size(); ++k) soup.triangles.push_back({{corners[0], corners[k + 1], corners[k]}, material});
+            // Each piece turned from OBJ's counter-clockwise to raster's clockwise order.
+            for (const auto& [a, b, c] : detail::triangles_of_polygon(outline)) {
+                soup.triangles.push_back({{corners[a], corners[c], corners[b]}, material});
+            }
         }
     }
     return soup;
@@ -195,21 +181,59 @@ PhongMaterial material_from(const tinyobj::material_t& m) {
     return material;
 }
 
-Model model_from(std::istream& obj, const std::string& name, MaterialLibraries& libraries, const ObjOptions& options, bool load_maps) {
+// tinyobjloader fails a load only on an index it cannot read in a statement the survey does not
+// check (l, p, vw): said in raster's words, with the line where its message has one.
+std::runtime_error load_failure(const std::string& err, const std::string& name) {
+    const std::size_t at = err.find("line ");
+    std::size_t line = 0;
+    if (at != std::string::npos) std::from_chars(err.data() + at + 5, err.data() + err.size(), line);
+    if (line == 0) return std::runtime_error(name + ": not an OBJ model raster can read");
+    return std::runtime_error(name + ":" + std::to_string(line) + ": a statement with an index raster cannot read");
+}
+
+// Rethrows the exception being handled as one line that begins with the file's name.
+[[noreturn]] void rethrow_named(const std::string& name) {
+    try {
+        throw;
+    } catch (const std::runtime_error& problem) {
+        const std::string what = problem.what();
+        throw std::runtime_error(what.starts_with(name + ":") ? what : name + ": " + what);
+    }
+}
+
+// The survey's word on materials a face asks for that no library gave, unless a library that
+// failed already explains it: one warning for one fact.
+void warn_of_missing_materials(Model& model, const std::string& name, const detail::ObjSurvey& survey,
+                               const std::vector<tinyobj::material_t>& materials, bool a_library_failed) {
+    if (a_library_failed) return;
+    for (const detail::NamedAt& used : survey.materials) {
+        const bool found = std::any_of(materials.begin(), materials.end(), [&](const tinyobj::material_t& m) { return m.name == used.name; });
+        if (found) continue;
+        const std::string at = name + ":" + std::to_string(used.line) + ": material '" + printable(used.name) + "' ";
+        model.warnings.push_back(at + (survey.libraries.empty() ? "is used, but the file names no material library"
+                                                                : "is in none of the file's material libraries") +
+                                 "; drawing the default material");
+    }
+}
+
+Model model_from(std::istream& obj, const std::string& name, const detail::ObjSurvey& survey, MaterialLibraries& libraries,
+                 const ObjOptions& options, bool load_maps) {
     tinyobj::attrib_t attrib;
     std::vector<tinyobj::shape_t> shapes;
     std::vector<tinyobj::material_t> materials;
-    std::string warn, err;
-    const bool ok = tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &obj, &libraries, true, false);
-    if (!ok) {
-        const std::string first = err.substr(0, err.find('\n'));
-        throw BadModel(first.empty() ? "not an OBJ model" : first);
+    std::string ignored_warnings, err;  // the survey has said what matters, in raster's words
+    if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &ignored_warnings, &err, &obj, &libraries, false, false)) {
+        throw load_failure(err, name);
     }
     Model model;
-    add_lines(model.warnings, name + ": ", warn);
+    model.warnings = survey.warnings;
     model.warnings.insert(model.warnings.end(), libraries.warnings().begin(), libraries.warnings().end());
-    std::size_t skipped = 0;
-    const detail::PolygonSoup soup = soup_from(attrib, shapes, skipped);
+    warn_of_missing_materials(model, name, survey, materials, libraries.any_failed());
+    model.sources = std::move(libraries.sources());
+    std::size_t skipped = survey.skipped_faces;
+    std::size_t dropped_again = 0;
+    const detail::PolygonSoup soup = soup_from(attrib, shapes, dropped_again);
+    skipped = std::max(skipped, dropped_again);
     if (skipped > 0) model.warnings.push_back(name + ": skipped " + std::to_string(skipped) + " faces with fewer than 3 corners");
     std::map<std::filesystem::path, std::shared_ptr<const Texture>> loaded;  // by canonical path: each file read once
     std::size_t texels = 0;
@@ -222,23 +246,28 @@ Model model_from(std::istream& obj, const std::string& name, MaterialLibraries& 
             part.material = material_from(m);
             translucent = translucent || m.dissolve < 1.0F;
             part.sampler.wrap = m.diffuse_texopt.clamp ? TextureWrap::clamp : TextureWrap::repeat;
+            const std::string material = "material '" + printable(m.name) + "'";
             if (!m.diffuse_texname.empty() && load_maps) {
                 const std::filesystem::path given = libraries.directory_of(static_cast<std::size_t>(id)) / m.diffuse_texname;
                 std::error_code error;
                 std::filesystem::path map = std::filesystem::weakly_canonical(given, error);
                 if (error) map = given;
                 if (part.mesh.uvs.empty()) {
-                    model.warnings.push_back(name + ": material '" + m.name + "' has a map but its faces have no texture coordinates; drawing its colour");
+                    model.warnings.push_back(name + ": " + material + " has a map but its faces have no texture coordinates; drawing its colour");
                 } else if (const auto found = loaded.find(map); found != loaded.end()) {
                     part.texture = found->second;
                 } else {
                     try {
                         const std::size_t left = kMaxModelTexels - texels;
-                        if (left == 0) throw std::runtime_error(given.string() + ": the model's textures already hold " + std::to_string(kMaxModelTexels) + " texels");
-                        part.texture = std::make_shared<const Texture>(read_texture(given, std::min(options.max_texels, left)));
+                        if (left == 0) {
+                            throw std::runtime_error(printable(given.string()) + ": the model's textures already hold " +
+                                                     std::to_string(kMaxModelTexels) + " texels");
+                        }
+                        part.texture = std::make_shared<const Texture>(
+                            read_texture(given, std::min(options.max_texels, left), options.confine, &model.sources));
                         texels += static_cast<std::size_t>(part.texture->width()) * static_cast<std::size_t>(part.texture->height());
                     } catch (const std::runtime_error& problem) {
-                        model.warnings.push_back(std::string(problem.what()) + "; drawing material '" + m.name + "' in its colour");
+                        model.warnings.push_back(std::string(problem.what()) + "; drawing " + material + " in its colour");
                     }
                     loaded.emplace(map, part.texture);
                 }
@@ -260,28 +289,42 @@ Model model_from(std::istream& obj, const std::string& name, MaterialLibraries& 
 }  // namespace
 
 Model read_obj(const std::filesystem::path& path, const ObjOptions& options) {
+    const std::string name = printable(path.string());
     try {
-        std::ifstream in = open_checked(path);
-        check_faces(in, path.string());
-        in.clear();
-        in.seekg(0);
-        MaterialLibraries libraries(path.parent_path(), std::nullopt);
-        return model_from(in, path.string(), libraries, options, options.load_textures);
-    } catch (const BadModel& problem) {
-        throw std::runtime_error(path.string() + ": " + problem.what());
+        InputFile file(path, text_rules("model", "a Wavefront OBJ text file", options.confine));
+        const detail::ObjSurvey survey = detail::survey_obj(name, kMaxFaceCorners, [&](const auto& visit) {
+            for_each_line(file, name, kMaxObjLineBytes, visit);
+        });
+        detail::InputStreamBuf buffer(file);
+        std::istream in(&buffer);
+        MaterialLibraries libraries(path.parent_path(), std::nullopt, name, survey, options);
+        Model model = model_from(in, name, survey, libraries, options, options.load_textures);
+        model.sources.insert(model.sources.begin(), file.record());
+        return model;
+    } catch (const std::runtime_error&) {
+        rethrow_named(name);
     }
 }
 
 Model parse_obj(std::string_view obj, std::string_view mtl, ObjOptions options) {
+    const std::string name = "<memory>";
     try {
+        const detail::ObjSurvey survey = detail::survey_obj(name, kMaxFaceCorners, [&](const auto& visit) {
+            std::size_t number = 1;
+            for (std::size_t start = 0; start <= obj.size(); ++number) {
+                const std::size_t end = std::min(obj.find('\n', start), obj.size());
+                if (end - start > kMaxObjLineBytes) {
+                    throw std::runtime_error(name + ":" + std::to_string(number) + ": a line longer than the most raster reads in one line");
+                }
+                visit(obj.substr(start, end - start), number);
+                start = end + 1;
+            }
+        });
         std::istringstream in{std::string(obj)};
-        check_faces(in, "<memory>");
-        in.clear();
-        in.seekg(0);
-        MaterialLibraries libraries(".", mtl);
-        return model_from(in, "<memory>", libraries, options, false);
-    } catch (const BadModel& problem) {
-        throw std::runtime_error(std::string("<memory>: ") + problem.what());
+        MaterialLibraries libraries(".", mtl, name, survey, options);
+        return model_from(in, name, survey, libraries, options, false);
+    } catch (const std::runtime_error&) {
+        rethrow_named(name);
     }
 }
 

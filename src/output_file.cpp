@@ -18,7 +18,7 @@ namespace fs = std::filesystem;
 namespace {
 
 [[noreturn]] void fail(const fs::path& target, const std::string& reason) {
-    throw std::runtime_error("cannot write '" + target.string() + "': " + reason);
+    throw std::runtime_error("cannot write '" + printable(target.string()) + "': " + reason);
 }
 
 fs::path directory_of(const fs::path& target) {
@@ -50,7 +50,8 @@ fs::path resolve_links(const fs::path& path) {
 
 // The file to write after the policy on links, checked: its directory exists, and it is
 // absent or a regular file. Returns its status in `existing` when it exists.
-fs::path checked_destination(const fs::path& path, OutputPolicy policy, std::optional<struct stat>& existing) {
+fs::path checked_destination(const fs::path& path, OutputPolicy policy, std::span<const InputRecord> inputs,
+                             std::optional<struct stat>& existing) {
     if (path.empty() || !path.has_filename()) fail(path, "the path does not name a file");
     const fs::path target = policy.follow_symlinks ? resolve_links(path) : path;
     const fs::path directory = directory_of(target);
@@ -64,6 +65,12 @@ fs::path checked_destination(const fs::path& path, OutputPolicy policy, std::opt
     existing.reset();
     if (::lstat(target.c_str(), &status) == 0) {
         if (!S_ISREG(status.st_mode)) fail(path, std::string("it is ") + kind_of(status.st_mode));
+        const FileIdentity identity{static_cast<std::uint64_t>(status.st_dev), static_cast<std::uint64_t>(status.st_ino)};
+        for (const InputRecord& input : inputs) {
+            if (input.identity != identity) continue;
+            const std::string same = input.path == path ? "" : " '" + printable(input.path.string()) + "'";
+            fail(path, "it is the " + input.role + same + " this run reads; choose another output name");
+        }
         existing = status;
     } else if (errno != ENOENT) {
         fail(path, std::strerror(errno));
@@ -149,17 +156,18 @@ private:
 
 }  // namespace
 
-void check_output_path(const fs::path& path, OutputPolicy policy) {
+void check_output_path(const fs::path& path, OutputPolicy policy, std::span<const InputRecord> inputs) {
     std::optional<struct stat> existing;
-    const fs::path target = checked_destination(path, policy, existing);
+    const fs::path target = checked_destination(path, policy, inputs, existing);
     // Probe that the directory takes a new file; interrupts wait until the probe is gone.
     const InterruptsHeld held;
     const TemporaryFile probe(target, 0600);
 }
 
-void write_output_file(const fs::path& path, std::span<const std::uint8_t> bytes, OutputPolicy policy) {
+void write_output_file(const fs::path& path, std::span<const std::uint8_t> bytes, OutputPolicy policy,
+                       std::span<const InputRecord> inputs) {
     std::optional<struct stat> existing;
-    const fs::path target = checked_destination(path, policy, existing);
+    const fs::path target = checked_destination(path, policy, inputs, existing);
     const InterruptsHeld held;
     TemporaryFile file(target, existing ? 0600 : 0666);
     if (existing) {

@@ -78,10 +78,18 @@ struct Picture {
     Picture& operator=(const Picture&) = delete;
 };
 
-std::vector<std::uint8_t> read_bytes(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw std::runtime_error("cannot read '" + path.string() + "'");
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+std::vector<std::uint8_t> read_webp_file(const std::filesystem::path& path, std::vector<InputRecord>* sources) {
+    InputRules rules;
+    rules.role = "animation";
+    rules.max_bytes = kMaxWebpFileBytes;
+    rules.signature = looks_like_webp;
+    rules.signature_bytes = 12;
+    rules.expected = "a WebP file";
+    try {
+        return read_input_file(path, rules, sources);
+    } catch (const std::runtime_error& problem) {
+        throw std::runtime_error("'" + printable(path.string()) + "' " + problem.what());
+    }
 }
 
 // Drops the alpha channel of an RGBA buffer that libwebp decoded.
@@ -213,8 +221,9 @@ struct AnimationEncoder::State {
         if (path == AnimationPath::parallel) {
             config = parallel_config(settings.effort);
             if (settings.tuning) config.method = settings.tuning->method, config.quality = settings.tuning->quality;
-            threads = settings.threads > 0 ? static_cast<std::size_t>(settings.threads)
-                                           : std::max(1U, std::thread::hardware_concurrency());
+            // Frames in flight follow the cores, not the count asked for: more would only hold memory.
+            const std::size_t cores = std::max(1U, std::thread::hardware_concurrency());
+            threads = settings.threads > 0 ? std::min(static_cast<std::size_t>(settings.threads), cores) : cores;
             try_blending = settings.effort == Effort::max;
             pool = std::make_unique<detail::TaskPool<EncodedFrame>>(threads);
             mux = WebPMuxNew();
@@ -390,8 +399,8 @@ std::uintmax_t AnimationWriter::finish() {
 }
 
 WebpInfo for_each_webp_frame(const std::filesystem::path& path,
-                             const std::function<bool(const DecodedFrame&)>& visit) {
-    const std::vector<std::uint8_t> bytes = read_bytes(path);
+                             const std::function<bool(const DecodedFrame&)>& visit, std::vector<InputRecord>* sources) {
+    const std::vector<std::uint8_t> bytes = read_webp_file(path, sources);
     const WebPData data{bytes.data(), bytes.size()};
     WebPAnimDecoderOptions options;
     if (!WebPAnimDecoderOptionsInit(&options)) throw std::runtime_error("libwebp version mismatch");
@@ -401,7 +410,7 @@ WebpInfo for_each_webp_frame(const std::filesystem::path& path,
         WebPAnimDecoderNew(&data, &options), WebPAnimDecoderDelete);
     WebPAnimInfo info;
     if (!decoder || !WebPAnimDecoderGetInfo(decoder.get(), &info)) {
-        throw std::runtime_error("'" + path.string() + "' is not a WebP file");
+        throw std::runtime_error("'" + printable(path.string()) + "' is not a WebP file raster can decode");
     }
     const WebpInfo result{static_cast<int>(info.canvas_width), static_cast<int>(info.canvas_height),
                           static_cast<int>(info.frame_count)};
@@ -410,7 +419,7 @@ WebpInfo for_each_webp_frame(const std::filesystem::path& path,
         std::uint8_t* rgba = nullptr;
         int end_ms = 0;
         if (!WebPAnimDecoderGetNext(decoder.get(), &rgba, &end_ms)) {
-            throw std::runtime_error("'" + path.string() + "' has a corrupt frame");
+            throw std::runtime_error("'" + printable(path.string()) + "' has a corrupt frame");
         }
         const DecodedFrame frame{framebuffer_from_rgba(rgba, result.width, result.height), previous_end_ms,
                                  end_ms - previous_end_ms};

@@ -199,5 +199,5 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"OutputIsAFifo", kAnimatedCube, {"a-fifo"}, "cannot write 'a-fifo': it is a FIFO", false},
         BadInput{"OutputIsASymbolicLink", kStillCube, {"a-link.webp"}, "cannot write 'a-link.webp': it is a symbolic link", false},
         BadInput{"FrameBeyondTheAnimation", kWebpFrame, {"two-frames.webp", "2", "existing.webp"}, "has 2 frame(s), numbered 0..1", false},
-        BadInput{"FrameOfAFileThatIsNotWebp", kWebpFrame, {"a-file", "0", "existing.webp"}, "'a-file' is not a WebP file", false}),
+        BadInput{"FrameOfAFileThatIsNotWebp", kWebpFrame, {"a-file", "0", "existing.webp"}, "'a-file' is empty, not a WebP file", false}),
     [](const ::testing::TestParamInfo<BadInput>& param) { return param.param.case_name; });

@@ -100,8 +100,8 @@ TEST(ObjFile, BadIndicesAndPointsAreOneLineErrors) {
     std::string many = triangle + "f";
     for (std::size_t i = 0; i <= raster::kMaxFaceCorners; ++i) many += " " + std::to_string(i % 3 + 1);
     EXPECT_EQ(error_of(many + "\n"), "<memory>:4: a face of more than 1024 corners");
-    EXPECT_EQ(error_of("v 0 0 0\nv 1 0 0\nv 0 -1e39 0\nf 1 2 3\n"), "<memory>: vertex 3 is not a finite point");
-    EXPECT_EQ(error_of("v 0 0 0\nv 1e39 0 0\nv 0 1 0\nf 1 2 3\n"), "<memory>: vertex 2 is not a finite point");
+    EXPECT_EQ(error_of("v 0 0 0\nv 1 0 0\nv 0 -1e39 0\nf 1 2 3\n"),
+              "<memory>:4: the face uses vertex 3, but line 3 gives it '-1e39', which is beyond the largest coordinate raster stores");
     EXPECT_EQ(error_of(""), "<memory>: no faces to draw");
     EXPECT_EQ(error_of(triangle), "<memory>: no faces to draw");
     EXPECT_EQ(error_of("v 0 0 0\nv 0 0 0\nv 0 0 0\nf 1 2 3\n"), "<memory>: no faces to draw");  // no area
@@ -179,5 +179,161 @@ TEST(ObjFile, DirectoriesAndMissingFilesAreOneLineErrorsNamingThem) {
         } catch (const std::runtime_error& error) {
             EXPECT_EQ(std::string(error.what()).rfind(path.string() + ": ", 0), 0U) << error.what();
         }
+    }
+}
+
+namespace {
+
+// The OBJ text of one face in the XY plane, its corners in the order given.
+std::string face_obj(const std::vector<glm::dvec2>& outline) {
+    std::string obj;
+    for (const glm::dvec2& p : outline) obj += "v " + std::to_string(p.x) + " " + std::to_string(p.y) + " 0\n";
+    obj += "f";
+    for (std::size_t i = 1; i <= outline.size(); ++i) obj += " " + std::to_string(i);
+    return obj + "\n";
+}
+
+double shoelace(const std::vector<glm::dvec2>& outline) {
+    double twice = 0.0;
+    for (std::size_t i = 0; i < outline.size(); ++i) {
+        const glm::dvec2 a = outline[i], b = outline[(i + 1) % outline.size()];
+        twice += a.x * b.y - b.x * a.y;
+    }
+    return 0.5 * twice;
+}
+
+// Crossings of a ray to +x: odd inside, even outside (a slit of no width crosses twice).
+bool inside(const std::vector<glm::dvec2>& outline, glm::dvec2 p) {
+    bool odd = false;
+    for (std::size_t i = 0, j = outline.size() - 1; i < outline.size(); j = i++) {
+        const glm::dvec2 a = outline[i], b = outline[j];
+        if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y)) odd = !odd;
+    }
+    return odd;
+}
+
+std::vector<glm::dvec2> regular(int corners, double radius, bool clockwise) {
+    std::vector<glm::dvec2> ring;
+    for (int i = 0; i < corners; ++i) {
+        const double angle = (clockwise ? -1.0 : 1.0) * 2.0 * std::numbers::pi * i / corners;
+        ring.emplace_back(radius * std::cos(angle), radius * std::sin(angle));
+    }
+    return ring;
+}
+
+// Every facet of the model's one mesh, in the XY plane, must tile the outline: the areas add up
+// to the polygon's, and each sample point inside is covered once, each outside never.
+void expect_tiles(const std::vector<glm::dvec2>& outline, const std::string& name) {
+    const Model model = parse_obj(face_obj(outline), "");
+    ASSERT_EQ(model.parts.size(), 1U) << name;
+    const raster::Mesh& mesh = model.parts[0].mesh;
+    EXPECT_LE(mesh.facets.size(), outline.size() - 2) << name;
+    double area = 0.0;
+    std::vector<std::array<glm::dvec2, 3>> triangles;
+    for (const raster::Facet& facet : mesh.facets) {
+        std::array<glm::dvec2, 3> t;
+        for (int k = 0; k < 3; ++k) t[static_cast<std::size_t>(k)] = glm::dvec2(mesh.positions[facet.corners[static_cast<std::size_t>(k)]]);
+        area += std::abs(shoelace({t[0], t[1], t[2]}));
+        triangles.push_back(t);
+    }
+    // Positions are floats: the areas agree to float precision.
+    EXPECT_NEAR(area, std::abs(shoelace(outline)), 1e-5 * std::abs(shoelace(outline))) << name;
+    glm::dvec2 low(1e9), high(-1e9);
+    for (const glm::dvec2& p : outline) low = glm::min(low, p), high = glm::max(high, p);
+    int wrong = 0;
+    for (int i = 0; i < 97; ++i) {
+        for (int j = 0; j < 89; ++j) {
+            const glm::dvec2 p = low + (high - low) * glm::dvec2((i + 0.5113) / 97.0, (j + 0.4871) / 89.0);
+            int covered = 0;
+            for (const auto& t : triangles) {
+                const double d0 = shoelace({t[0], t[1], p}), d1 = shoelace({t[1], t[2], p}), d2 = shoelace({t[2], t[0], p});
+                if ((d0 >= 0 && d1 >= 0 && d2 >= 0) || (d0 <= 0 && d1 <= 0 && d2 <= 0)) ++covered;
+            }
+            if (covered != (inside(outline, p) ? 1 : 0)) ++wrong;
+        }
+    }
+    EXPECT_EQ(wrong, 0) << name;
+}
+
+}  // namespace
+
+TEST(ObjFile, FacesOfAnyShapeAreSplitIntoExactlyTheirOwnArea) {
+    // A LightWave-style ring: the outer circle one way, a slit, the inner circle back; 66 corners, 64 distinct.
+    std::vector<glm::dvec2> ring = regular(32, 2.0, false);
+    ring.push_back(ring[0]);
+    const std::vector<glm::dvec2> hole = regular(32, 1.0, true);
+    ring.insert(ring.end(), hole.begin(), hole.end());
+    ring.push_back(hole[0]);
+    ASSERT_EQ(ring.size(), 66U);
+    std::vector<glm::dvec2> star;
+    for (int i = 0; i < 10; ++i) {
+        const double angle = std::numbers::pi * i / 5.0, radius = i % 2 == 0 ? 1.0 : 0.38;
+        star.emplace_back(radius * std::cos(angle), radius * std::sin(angle));
+    }
+    const std::vector<glm::dvec2> ell{{0, 0}, {3, 0}, {3, 1}, {1, 1}, {1, 3}, {0, 3}};
+    std::vector<glm::dvec2> comb{{0, 0}, {9, 0}, {9, 1}};
+    for (int tooth = 4; tooth >= 0; --tooth) {
+        comb.emplace_back(2 * tooth + 1, 3);
+        comb.emplace_back(2 * tooth, 3);
+        if (tooth > 0) comb.emplace_back(2 * tooth, 1), comb.emplace_back(2 * tooth - 1, 1);
+    }
+    expect_tiles(ring, "ring cut by a slit");
+    expect_tiles(star, "star");
+    expect_tiles(ell, "L");
+    expect_tiles(comb, "comb");
+    expect_tiles(std::vector<glm::dvec2>(ell.rbegin(), ell.rend()), "L wound the other way");
+}
+
+TEST(ObjFile, NonFiniteCoordinatesAFaceUsesAreRefusedWithTheirLine) {
+    const std::string face = "f 1 2 3\n";
+    EXPECT_EQ(error_of("v 0 0 nan\nv 1 0 0\nv 0 1 0\n" + face),
+              "<memory>:4: the face uses vertex 1, but line 1 gives it 'nan', which is not a finite number");
+    EXPECT_EQ(error_of("v 0 0 0\nv inf 0 0\nv 0 1 0\n" + face),
+              "<memory>:4: the face uses vertex 2, but line 2 gives it 'inf', which is not a finite number");
+    EXPECT_EQ(error_of("v 0 0 0\nv 1 0 0\nv 0 1e39 0\n" + face),
+              "<memory>:4: the face uses vertex 3, but line 3 gives it '1e39', which is beyond the largest coordinate raster stores");
+    EXPECT_EQ(error_of("v 0 0 0\nv 1 0 0\nv 0 1 zero\n" + face),
+              "<memory>:4: the face uses vertex 3, but line 3 gives it 'zero', which is not a number");
+    EXPECT_EQ(error_of("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 -nan\nf 1//1 2//1 3//1\n"),
+              "<memory>:5: the face uses normal 1, but line 4 gives it '-nan', which is not a finite number");
+    EXPECT_EQ(error_of("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 -infinity\nf 1/1 2/1 3/-1\n"),
+              "<memory>:5: the face uses texture coordinate 1, but line 4 gives it '-infinity', which is not a finite number");
+    // +1 and exponents are numbers as written.
+    EXPECT_EQ(error_of("v +1 0 0\nv 1e0 1 0\nv 0 1 0.5E-1\n" + face), "");
+}
+
+TEST(ObjFile, NonFiniteCoordinatesNoFaceUsesAreAWarning) {
+    const Model model = parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nv nan 0 0\nf 1 2 3\n", "");
+    EXPECT_EQ(model.warnings, (std::vector<std::string>{"<memory>:4: vertex 4 is 'nan', which is not a finite number; no face uses it"}));
+}
+
+TEST(ObjFile, FaceCornersOfNoOBJFormAreRefusedInOurWordsWithControlBytesShown) {
+    const std::string points = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    EXPECT_EQ(error_of(points + "f 1/ 2/ 3/\n"), "<memory>:4: corner '1/' is not of the form v, v/vt, v/vt/vn or v//vn");
+    EXPECT_EQ(error_of(points + "f 1/1/1/1 2 3\n"), "<memory>:4: corner '1/1/1/1' is not of the form v, v/vt, v/vt/vn or v//vn");
+    EXPECT_EQ(error_of(points + std::string("f 1 2\0 3\n", 9)), "<memory>:4: '2\\x00' is not a vertex index");
+    EXPECT_EQ(error_of(points + "f 1 2 \x1b[2J\n"), "<memory>:4: '\\x1b[2J' is not a vertex index");
+}
+
+TEST(ObjFile, AMissingMaterialLibraryIsOneWarning) {
+    const test_support::ScratchDir dir;
+    test_support::write_text(dir / "m.obj", test_support::textured_cube_obj("missing.mtl", "skin"));
+    const Model model = raster::read_obj(dir / "m.obj");
+    ASSERT_EQ(model.warnings.size(), 1U) << ::testing::PrintToString(model.warnings);
+    EXPECT_EQ(model.warnings[0], (dir / "m.obj").string() + ":1: material library '" + (dir / "missing.mtl").string() +
+                                     "' no such file; drawing the default material");
+    const Model unknown = parse_obj(test_support::textured_cube_obj("lib.mtl", "absent"), "newmtl other\nKd 1 0 0\n");
+    EXPECT_EQ(unknown.warnings,
+              (std::vector<std::string>{"<memory>:14: material 'absent' is in none of the file's material libraries; drawing the default material"}));
+}
+
+TEST(ObjFile, ALineLongerThanTheCapIsRefusedWithItsNumberBeforeItIsHeld) {
+    const test_support::ScratchDir dir;
+    test_support::write_text(dir / "long.obj", "v 0 0 0\n#" + std::string(raster::kMaxObjLineBytes, 'x') + "\nv 1 0 0\n");
+    try {
+        (void)raster::read_obj(dir / "long.obj");
+        ADD_FAILURE() << "a line over the cap was read";
+    } catch (const std::runtime_error& error) {
+        EXPECT_EQ(std::string(error.what()), (dir / "long.obj").string() + ":2: a line longer than 4 MiB, the most raster reads in one line");
     }
 }

@@ -92,11 +92,11 @@ TEST(RenderApp, BadModelsAndOptionsFailWithOneLine) {
     std::filesystem::create_directory(dir / "folder.obj");
     const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
         {{"bad.obj"}, "render: bad.obj:3: face names vertex 7, but 2 are defined before it\n"},
-        {{"ok.obj", "--near", "5", "--far", "1"}, "render: --near must be less than --far, got 5.000000 and 1.000000\n"},
+        {{"ok.obj", "--near", "5", "--far", "1"}, "render: --near must be less than --far, got 5 and 1\n"},
         {{"ok.obj", "--ortho", "--near", "1"}, "render: --near and --far set a perspective lens; an orthographic view draws the whole model\n"},
         {{"empty.obj"}, "render: empty.obj: no faces to draw\n"},
         {{"folder.obj"}, "render: folder.obj: is a directory, not a file\n"},
-        {{"ok.obj", "--texture", "nowhere.png"}, "render: nowhere.png: cannot read: No such file or directory\n"},
+        {{"ok.obj", "--texture", "nowhere.png"}, "render: nowhere.png: no such file\n"},
         {{"ok.obj", "--eye", "0,5,0"}, "render: the view runs along the up direction; give another --up or --eye\n"},
     };
     for (const auto& [arguments, message] : cases) {

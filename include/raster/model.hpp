@@ -1,5 +1,6 @@
 #pragma once
 
+#include <raster/input_file.hpp>
 #include <raster/linear_lighting.hpp>
 #include <raster/mesh.hpp>
 #include <raster/texture.hpp>
@@ -25,6 +26,8 @@ struct Model {
     std::vector<ModelPart> parts;
     // What was read but not used as the file asked, one line each, naming the file.
     std::vector<std::string> warnings;
+    // Every file read to make it: the model, its material libraries and textures.
+    std::vector<InputRecord> sources;
 };
 
 // The material of a model file without one: a light grey, no highlight (Blender's default diffuse).

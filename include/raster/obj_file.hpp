@@ -12,6 +12,8 @@ namespace raster {
 
 // The largest OBJ or MTL file read, in bytes.
 inline constexpr std::uintmax_t kMaxModelFileBytes = std::uintmax_t{1} << 30;
+// The longest line of an OBJ or MTL file, in bytes: one line is held whole while it is read.
+inline constexpr std::size_t kMaxObjLineBytes = std::size_t{4} << 20;
 // The most corners one face may have: splitting a polygon takes time quadratic in its corners.
 inline constexpr std::size_t kMaxFaceCorners = 1024;
 // The most texels all of one model's textures may hold together: four of the largest.
@@ -23,6 +25,9 @@ struct ObjOptions {
     double crease_degrees = 60.0;
     bool load_textures = true;
     std::size_t max_texels = kMaxTextureTexels;
+    // When set (by confinement_root), nothing outside this directory is read: what the model
+    // names there is missing, with a warning.
+    std::filesystem::path confine{};
 };
 
 // Reads an OBJ file, the MTL files it names (beside it) and their diffuse maps (relative to the

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <raster/input_file.hpp>
+
 #include <cstdint>
 #include <filesystem>
 #include <span>
@@ -14,13 +16,16 @@ struct OutputPolicy {
 };
 
 // Checks, before any work, that `path` can be written: its directory exists and takes a new
-// file, and the path is absent or a regular file (or, by policy, a link to one).
-void check_output_path(const std::filesystem::path& path, OutputPolicy policy = {});
+// file, and the path is absent or a regular file (or, by policy, a link to one) that is none
+// of the `inputs` this run read: an output never replaces what it was made from.
+void check_output_path(const std::filesystem::path& path, OutputPolicy policy = {},
+                       std::span<const InputRecord> inputs = {});
 
 // Writes the bytes to a temporary file beside the target and renames it over the target.
 // A new file gets 0666 less the umask; a replaced file keeps its mode. SIGINT, SIGTERM and
 // SIGHUP wait while the temporary file exists, so an interrupt leaves the old file or the new.
+// The `inputs` are checked again just before the rename.
 void write_output_file(const std::filesystem::path& path, std::span<const std::uint8_t> bytes,
-                       OutputPolicy policy = {});
+                       OutputPolicy policy = {}, std::span<const InputRecord> inputs = {});
 
 }  // namespace raster

@@ -1,11 +1,13 @@
 #pragma once
 
+#include <raster/input_file.hpp>
 #include <raster/texture.hpp>
 
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <span>
+#include <vector>
 
 // Textures read from image files: PNG, JPEG, TGA and BMP through stb_image, and WebP.
 namespace raster {
@@ -22,6 +24,9 @@ inline constexpr std::uintmax_t kMaxTextureFileBytes = std::uintmax_t{256} << 20
 [[nodiscard]] Texture decode_texture(std::span<const std::uint8_t> bytes, std::size_t max_texels = kMaxTextureTexels);
 
 // Reads and decodes an image file; errors name the file: "wood.png: not a PNG, JPEG, ...".
-[[nodiscard]] Texture read_texture(const std::filesystem::path& path, std::size_t max_texels = kMaxTextureTexels);
+// With `confine` set (by confinement_root), a file outside that directory is refused; the file
+// read is appended to `sources` when given.
+[[nodiscard]] Texture read_texture(const std::filesystem::path& path, std::size_t max_texels = kMaxTextureTexels,
+                                   const std::filesystem::path& confine = {}, std::vector<InputRecord>* sources = nullptr);
 
 }  // namespace raster

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <raster/input_file.hpp>
+
 #include <raster/framebuffer.hpp>
 #include <raster/output_file.hpp>
 
@@ -51,7 +53,7 @@ struct LosslessTuning {
 struct AnimationSettings {
     Effort effort = Effort::balanced;
     AnimationPath path = AnimationPath::parallel;
-    int threads = 0;  // frames encoded at once on the parallel path; 0: one per core
+    int threads = 0;  // frames encoded at once on the parallel path, at most one per core; 0: one per core
     std::optional<LosslessTuning> tuning{};  // replaces the effort's method and quality per frame
 };
 
@@ -112,6 +114,9 @@ struct DecodedWebp {
     std::vector<DecodedFrame> frames;  // a still decodes as one frame
 };
 
+// The largest WebP file read, in bytes.
+inline constexpr std::uintmax_t kMaxWebpFileBytes = std::uintmax_t{1} << 30;
+
 // Whether bytes begin like a WebP file (a RIFF container of type WEBP).
 [[nodiscard]] bool looks_like_webp(std::span<const std::uint8_t> bytes) noexcept;
 
@@ -130,7 +135,10 @@ struct WebpInfo {
     int height;
     int frame_count;  // frames in the file
 };
+// The file is read through InputFile: a regular file of at most kMaxWebpFileBytes that begins
+// like WebP, else one line and nothing read; what was read is appended to `sources` when given.
 WebpInfo for_each_webp_frame(const std::filesystem::path& path,
-                             const std::function<bool(const DecodedFrame&)>& visit);
+                             const std::function<bool(const DecodedFrame&)>& visit,
+                             std::vector<InputRecord>* sources = nullptr);
 
 }  // namespace raster

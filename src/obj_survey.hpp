@@ -1,0 +1,33 @@
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+// The first of two readings of an OBJ file: every line checked in raster's own words before
+// tinyobjloader builds the model, which reads numbers it cannot parse as 0 and drops what it
+// cannot use with messages of its own.
+namespace raster::detail {
+
+// Where the file names something, for warnings about it.
+struct NamedAt {
+    std::string name;
+    std::size_t line;
+};
+
+struct ObjSurvey {
+    std::vector<std::string> warnings;  // each "FILE:LINE: ..."
+    std::vector<NamedAt> libraries;     // mtllib names, first mention of each
+    std::vector<NamedAt> materials;     // usemtl names, first use of each
+    std::size_t skipped_faces = 0;      // faces of fewer than 3 corners
+};
+
+// Checks one OBJ text line by line (`lines` calls its visitor with each line and its number):
+// faces must name, by v, v/vt, v/vt/vn or v//vn, only finite coordinates defined before them,
+// with at most `max_corners` corners. Throws std::runtime_error "NAME:LINE: ..." otherwise.
+[[nodiscard]] ObjSurvey survey_obj(const std::string& name, std::size_t max_corners,
+                                   const std::function<void(const std::function<void(std::string_view, std::size_t)>&)>& lines);
+
+}  // namespace raster::detail
