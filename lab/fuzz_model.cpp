@@ -55,7 +55,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const std::size_t split = text.find('\0');
         const std::string_view obj = text.substr(0, split);
         const std::string_view mtl = split == std::string_view::npos ? std::string_view() : text.substr(split + 1);
-        const auto model = std::make_shared<const raster::Model>(raster::parse_obj(obj, mtl));
+        raster::ObjOptions options;
+        options.max_line_bytes = 256;  // short enough for the fuzzer to reach the refusal of long lines
+        const auto model = std::make_shared<const raster::Model>(raster::parse_obj(obj, mtl, options));
         draw(model, data[0] % 4 == 1 ? raster::ShadingMethod::phong : raster::ShadingMethod::unlit);
     } catch (const std::runtime_error&) {
         // The one way bad input may end: a clear error.

@@ -77,7 +77,7 @@ public:
         } else {
             try {
                 InputFile file(path, text_rules("material library", "an MTL text file", options_.confine));
-                for_each_line(file, path.string(), kMaxObjLineBytes, [](std::string_view, std::size_t) {});
+                for_each_line(file, printable(path.string()), options_.max_line_bytes, [](std::string_view, std::size_t) {});
                 detail::InputStreamBuf buffer(file);
                 std::istream in(&buffer);
                 tinyobj::LoadMtl(names, materials, &in, &ignored_warnings, &ignored_errors);
@@ -293,7 +293,7 @@ Model read_obj(const std::filesystem::path& path, const ObjOptions& options) {
     try {
         InputFile file(path, text_rules("model", "a Wavefront OBJ text file", options.confine));
         const detail::ObjSurvey survey = detail::survey_obj(name, kMaxFaceCorners, [&](const auto& visit) {
-            for_each_line(file, name, kMaxObjLineBytes, visit);
+            for_each_line(file, name, options.max_line_bytes, visit);
         });
         detail::InputStreamBuf buffer(file);
         std::istream in(&buffer);
@@ -313,7 +313,7 @@ Model parse_obj(std::string_view obj, std::string_view mtl, ObjOptions options) 
             std::size_t number = 1;
             for (std::size_t start = 0; start <= obj.size(); ++number) {
                 const std::size_t end = std::min(obj.find('\n', start), obj.size());
-                if (end - start > kMaxObjLineBytes) {
+                if (end - start > options.max_line_bytes) {
                     throw std::runtime_error(name + ":" + std::to_string(number) + ": a line longer than the most raster reads in one line");
                 }
                 visit(obj.substr(start, end - start), number);

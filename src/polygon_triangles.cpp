@@ -41,8 +41,8 @@ std::vector<glm::dvec2> counter_clockwise_outline(std::span<const glm::dvec3> co
     return outline;
 }
 
-// The corners not yet clipped, as a doubly linked ring, with whether each is convex and an ear. An
-// ear's status changes only when a neighbour is clipped, which keeps the whole clipping O(n^2).
+// The corners not yet clipped, as a doubly linked ring, with whether each is convex and an ear. In a
+// simple polygon only the neighbours of a clipped corner change status, which keeps clipping O(n^2).
 class EarRing {
 public:
     explicit EarRing(std::vector<glm::dvec2> outline)
@@ -82,8 +82,8 @@ public:
         return std::nullopt;
     }
 
-    // When no corner is an ear (the face crosses itself): a flat corner, whose triangle has no
-    // area, else the convex corner with the smallest triangle, else `start`.
+    // For when there is no ear (the face crosses itself, or what is left has no area): a flat corner,
+    // whose triangle has no area, else the convex corner with the smallest triangle, else `start`.
     [[nodiscard]] std::size_t least_harmful_corner(std::size_t start) const {
         std::optional<std::size_t> best;
         std::size_t i = start;
@@ -99,7 +99,7 @@ public:
     // search resumes (so that the triangles do not all fan out of one corner).
     std::size_t clip(std::size_t b, std::vector<Triangle>& triangles) {
         const std::size_t a = prev_[b], c = next_[b];
-        triangles.push_back({static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b), static_cast<std::uint32_t>(c)});
+        triangles.push_back(triangle(a, b, c));
         next_[a] = c;
         prev_[c] = a;
         --remaining_;
@@ -110,12 +110,16 @@ public:
         return next_[c];
     }
 
-    [[nodiscard]] Triangle last_triangle(std::size_t a) const {
-        return {static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(next_[a]), static_cast<std::uint32_t>(next_[next_[a]])};
-    }
+    [[nodiscard]] Triangle last_triangle(std::size_t a) const { return triangle(a, next_[a], next_[next_[a]]); }
 
 private:
-    [[nodiscard]] double turn(std::size_t i) const { return orientation(points_[prev_[i]], points_[i], points_[next_[i]]); }
+    static Triangle triangle(std::size_t a, std::size_t b, std::size_t c) {
+        return {static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b), static_cast<std::uint32_t>(c)};
+    }
+
+    [[nodiscard]] double turn(std::size_t i) const {
+        return orientation(points_[prev_[i]], points_[i], points_[next_[i]]);
+    }
 
     // +1 or -1 if the edge p -> q crosses the ray from `point` to +x upwards or downwards, else 0.
     static int crossing(glm::dvec2 p, glm::dvec2 q, glm::dvec2 point) {
@@ -124,14 +128,14 @@ private:
         return 0;
     }
 
-    // Whether q lies strictly left of the ray from p through r, beyond the noise.
-    [[nodiscard]] bool left_of(glm::dvec2 p, glm::dvec2 r, glm::dvec2 q) const { return orientation(p, r, q) > flat_; }
+    // Whether q lies strictly left of the line from p through r, beyond the noise.
+    [[nodiscard]] bool left_of(glm::dvec2 p, glm::dvec2 r, glm::dvec2 q) const {
+        return orientation(p, r, q) > flat_;
+    }
 
-    // A convex corner whose triangle holds no other corner; if any corner lies inside, a reflex or
-    // flat one does, so only those are tested. A corner at the same place as one of the triangle's
-    // (the two ends of a slit) only touches it, unless an edge leaves it into the triangle. And the
-    // rest of the ring, closed by the new edge a -> c, must not wind around the triangle: a face that
-    // touches itself can leave a convex corner whose triangle lies in no part of the face.
+    // A convex corner whose triangle holds no reflex or flat corner (any corner inside implies one),
+    // no edge entering it from a corner at one of its own places (a slit's ends only touch it), and
+    // which the rest of the ring does not wind around (as a pinched face's leftovers can).
     [[nodiscard]] bool is_ear(std::size_t b) const {
         if (!convex_[b]) return false;
         const std::size_t a = prev_[b], c = next_[b];
@@ -146,7 +150,9 @@ private:
                 // The triangle's angle at q is bounded by the two edges meeting there.
                 const glm::dvec2 from = q == pa ? pc : (q == pb ? pa : pb);
                 const glm::dvec2 to = q == pa ? pb : (q == pb ? pc : pa);
-                const auto enters = [&](glm::dvec2 end) { return left_of(from, q, end) && left_of(q, to, end); };
+                const auto enters = [&](glm::dvec2 end) {
+                    return left_of(from, q, end) && left_of(q, to, end);
+                };
                 if (enters(points_[prev_[i]]) || enters(points_[next_[i]])) return false;
             } else if (!convex_[i] && orientation(pa, pb, q) >= -flat_ && orientation(pb, pc, q) >= -flat_ &&
                        orientation(pc, pa, q) >= -flat_) {
@@ -177,8 +183,8 @@ std::vector<Triangle> triangles_of_polygon(std::span<const glm::dvec3> corners) 
         return triangles;
     }
     EarRing ring(std::move(outline));
-    // A face that touches itself can leave an ear's status stale; re-checking every corner costs
-    // as much as the first pass, so a budget of a few passes in all keeps garbage O(n^2).
+    // A face that touches itself can leave a status stale; re-checking costs a first pass, so a
+    // budget of a few passes in all keeps garbage O(n^2).
     std::size_t recheck_budget = 4 * corners.size();
     bool fresh = true;
     std::size_t cursor = 0;

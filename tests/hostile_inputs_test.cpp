@@ -63,7 +63,6 @@ TEST(HostileInputs, RenderNeverWritesOverAFileItReads) {
 
 TEST(HostileInputs, WebpFrameNeverWritesOverItsInput) {
     const ScratchDir dir;
-    ASSERT_EQ(run(kRender, {"--help"}, dir.path()).exit_code, 0);
     write_cube(dir);
     ASSERT_EQ(run(kRender, {"cube.obj", "--width", "16", "--height", "16", "cube.webp"}, dir.path()).exit_code, 0);
     const std::string before = read_text(dir / "cube.webp");
@@ -162,4 +161,24 @@ TEST(HostileInputs, ConfineKeepsEveryReadInsideTheDirectory) {
     EXPECT_FALSE(std::filesystem::exists(dir / "loose.webp"));
     EXPECT_FALSE(std::filesystem::exists(dir / "t.webp"));
     EXPECT_EQ(run(kRender, {"loose.obj", "--confine", "nowhere"}, dir.path()).err, "render: 'nowhere': no such file\n");
+}
+
+TEST(HostileInputs, ATruncatedTextureIsAWarningAndTheMaterialsColourOrAnErrorThroughTexture) {
+    const ScratchDir dir;
+    write_cube(dir);
+    const std::string png = read_text(dir / "tex.png");
+    test_support::write_text(dir / "cut.png", png.substr(0, png.size() - 20));
+    test_support::write_text(dir / "cut.mtl", "newmtl skin\nKd 1 1 1\nmap_Kd cut.png\n");
+    test_support::write_text(dir / "plain.mtl", "newmtl skin\nKd 1 1 1\n");
+    test_support::write_text(dir / "cut.obj", test_support::textured_cube_obj("cut.mtl", "skin"));
+    test_support::write_text(dir / "plain.obj", test_support::textured_cube_obj("plain.mtl", "skin"));
+    const auto cut = run(kRender, {"cut.obj", "--width", "24", "--height", "24"}, dir.path());
+    ASSERT_EQ(cut.exit_code, 0) << cut.err;
+    EXPECT_EQ(cut.err, "render: warning: cut.png: truncated image: the PNG data ends before the picture does; drawing material 'skin' in its colour\n");
+    ASSERT_EQ(run(kRender, {"plain.obj", "--width", "24", "--height", "24"}, dir.path()).exit_code, 0);
+    EXPECT_EQ(raster::read_webp(dir / "cut.webp").frames.at(0).image, raster::read_webp(dir / "plain.webp").frames.at(0).image);
+    const auto given = run(kRender, {"plain.obj", "--texture", "cut.png", "given.webp"}, dir.path());
+    EXPECT_EQ(given.exit_code, 1);
+    EXPECT_EQ(given.err, "render: cut.png: truncated image: the PNG data ends before the picture does\n");
+    EXPECT_FALSE(std::filesystem::exists(dir / "given.webp"));
 }

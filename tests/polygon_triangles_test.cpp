@@ -18,7 +18,9 @@ using Triangles = std::vector<std::array<std::uint32_t, 3>>;
 
 namespace {
 
-double cross(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) { return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x); }
+double cross(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
+    return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
 
 // Twice the signed area, by the shoelace formula.
 double twice_area(const Outline& outline) {
@@ -99,9 +101,12 @@ void expect_covers_once(const Outline& outline, const Triangles& triangles, int 
     for (const auto& t : triangles) {
         const glm::dvec2 a = outline[t[0]], b = outline[t[1]], c = outline[t[2]];
         const glm::ivec2 first = glm::max(glm::ivec2((glm::min(a, glm::min(b, c)) - low) / step) - 1, 0);
-        const glm::ivec2 last = glm::min(glm::ivec2((glm::max(a, glm::max(b, c)) - low) / step) + 1, glm::ivec2(columns - 1, rows - 1));
+        const glm::ivec2 last = glm::min(glm::ivec2((glm::max(a, glm::max(b, c)) - low) / step) + 1,
+                                         glm::ivec2(columns - 1, rows - 1));
         for (int j = first.y; j <= last.y; ++j) {
-            for (int i = first.x; i <= last.x; ++i) covered[static_cast<std::size_t>(j * columns + i)] += strictly_inside(a, b, c, sample(i, j));
+            for (int i = first.x; i <= last.x; ++i) {
+                covered[static_cast<std::size_t>(j * columns + i)] += strictly_inside(a, b, c, sample(i, j));
+            }
         }
     }
     int wrong = 0;
@@ -110,7 +115,8 @@ void expect_covers_once(const Outline& outline, const Triangles& triangles, int 
             const int expected = winding_number(outline, sample(i, j)) != 0 ? 1 : 0;
             const int actual = covered[static_cast<std::size_t>(j * columns + i)];
             if (actual != expected && ++wrong <= 3) {
-                ADD_FAILURE() << "(" << sample(i, j).x << ", " << sample(i, j).y << ") covered " << actual << " times";
+                const glm::dvec2 p = sample(i, j);
+                ADD_FAILURE() << "(" << p.x << ", " << p.y << ") covered " << actual << " times";
             }
         }
     }
@@ -132,16 +138,19 @@ glm::dvec2 on_circle(double radius, double angle) { return radius * glm::dvec2(s
 
 Outline star(int points, double outer, double inner) {
     Outline outline;
-    for (int k = 0; k < 2 * points; ++k) outline.push_back(on_circle(k % 2 == 0 ? outer : inner, k * std::numbers::pi / points));
+    for (int k = 0; k < 2 * points; ++k) {
+        outline.push_back(on_circle(k % 2 == 0 ? outer : inner, k * std::numbers::pi / points));
+    }
     return outline;
 }
 
 // An annulus of two n-gons cut open along a slit from the outer corner 0 to the inner corner 0, as
 // LightWave writes one: outer ring one way, inner the other, both ends of the slit twice.
 Outline ring_cut_by_slit(int sides, double outer, double inner) {
+    const auto angle = [sides](int k) { return 2.0 * std::numbers::pi * (k % sides) / sides; };
     Outline outline;
-    for (int k = 0; k <= sides; ++k) outline.push_back(on_circle(outer, 2.0 * std::numbers::pi * (k % sides) / sides));
-    for (int k = sides; k >= 0; --k) outline.push_back(on_circle(inner, 2.0 * std::numbers::pi * (k % sides) / sides));
+    for (int k = 0; k <= sides; ++k) outline.push_back(on_circle(outer, angle(k)));
+    for (int k = sides; k >= 0; --k) outline.push_back(on_circle(inner, angle(k)));
     return outline;
 }
 
@@ -182,11 +191,13 @@ TEST(PolygonTriangles, ConvexPolygonCoversItsAreaOnce) {
 
 TEST(PolygonTriangles, CollinearCornersCoverTheirAreaOnce) {
     expect_triangulated_in_every_pose({{0, 0}, {1, 0}, {2, 0}, {3, 0}, {3, 1}, {3, 2}, {1.5, 2}, {0, 2}, {0, 1}});
-    expect_triangulated_in_every_pose({{0, 0}, {2, 0}, {4, 0}, {4, 3}, {3, 3}, {3, 1}, {2, 1}, {1, 1}, {1, 3}, {0, 3}, {0, 1.5}});
+    expect_triangulated_in_every_pose(
+        {{0, 0}, {2, 0}, {4, 0}, {4, 3}, {3, 3}, {3, 1}, {2, 1}, {1, 1}, {1, 3}, {0, 3}, {0, 1.5}});
 }
 
 TEST(PolygonTriangles, RepeatedConsecutiveCornersCoverTheirAreaOnce) {
-    expect_triangulated_in_every_pose({{3, 1}, {1, 1}, {1, 1}, {1, 4}, {0, 4}, {0, 0}, {0, 0}, {0, 0}, {3, 0}, {3, 1}});
+    expect_triangulated_in_every_pose(
+        {{3, 1}, {1, 1}, {1, 1}, {1, 4}, {0, 4}, {0, 0}, {0, 0}, {0, 0}, {3, 0}, {3, 1}});
 }
 
 TEST(PolygonTriangles, LShapeCoversItsAreaOnce) {
@@ -199,28 +210,50 @@ TEST(PolygonTriangles, CombWithThinTeethCoversItsAreaOnce) { expect_triangulated
 
 TEST(PolygonTriangles, RingCutBySlitCoversItsAreaOnce) {
     // A square annulus with the slit from (0, 0) to (1, 1): 10 corners, 8 distinct.
-    expect_triangulated_in_every_pose({{0, 0}, {4, 0}, {4, 4}, {0, 4}, {0, 0}, {1, 1}, {1, 3}, {3, 3}, {3, 1}, {1, 1}});
+    expect_triangulated_in_every_pose(
+        {{0, 0}, {4, 0}, {4, 4}, {0, 4}, {0, 0}, {1, 1}, {1, 3}, {3, 3}, {3, 1}, {1, 1}});
     expect_triangulated_in_every_pose(ring_cut_by_slit(4, 2.0, 1.0));
 }
 
 TEST(PolygonTriangles, LightWaveRingOf66CornersCoversItsAreaOnce) {
     const Outline ring = ring_cut_by_slit(32, 1.0, 0.6);
     ASSERT_EQ(ring.size(), 66U);
-    expect_triangulated_in_every_pose(ring, 200, 200);
-    expect_triangulated_in_every_pose(ring_cut_by_slit(32, 1.0, 0.95), 300, 300);  // a thin ring
+    expect_triangulated_in_every_pose(ring, 150, 150);
+    expect_triangulated_in_every_pose(ring_cut_by_slit(32, 1.0, 0.95), 200, 200);  // a thin ring
+}
+
+TEST(PolygonTriangles, SlitsAndCracksOfOtherShapesCoverTheirAreaOnce) {
+    // A slit from a hole's corner at a slant, so that one visit of that corner is reflex.
+    expect_triangulated_in_every_pose(
+        {{1.6, 0}, {4, 0}, {4, 4}, {0, 4}, {0, 0}, {1.6, 0}, {1, 1}, {1, 3}, {3, 3}, {3, 1}, {1, 1}});
+    // Two holes, each with its own slit.
+    expect_triangulated_in_every_pose({{0, 0}, {1.5, 0}, {1, 1}, {1, 2}, {2, 2}, {2, 1}, {1, 1}, {1.5, 0}, {4.5, 0},
+                                       {5, 1}, {4, 1}, {4, 2}, {5, 2}, {5, 1}, {4.5, 0}, {6, 0}, {6, 3}, {0, 3}});
+    // A crack into a square, which has no area of its own.
+    expect_triangulated_in_every_pose({{0, 0}, {3, 1}, {0, 0}, {4, 0}, {4, 4}, {0, 4}});
+}
+
+TEST(PolygonTriangles, PinchedFaceCoversItsAreaOnce) {
+    // Two lobes that share one corner, which is thus visited twice.
+    expect_triangulated_in_every_pose({{0, 0}, {2, -1}, {2, 1}, {0, 0}, {-2, 1}, {-2, -1}});
+    expect_triangulated_in_every_pose({{0, 0}, {3, 0}, {3, 3}, {2, 3}, {2, 1}, {0, 0}, {1, 2}, {1, 3}, {0, 3}});
 }
 
 TEST(PolygonTriangles, CombOf1024CornersCoversItsAreaOnce) {
     const Outline teeth = comb(256);
     ASSERT_EQ(teeth.size(), 1024U);
-    expect_triangulated_in_every_pose(teeth, 2048, 12);
+    expect_triangulated_in_every_pose(teeth, 1024, 6);
 }
 
-TEST(PolygonTriangles, SpiralOf1024CornersCoversItsAreaOnce) { expect_triangulated_in_every_pose(spiral(1024), 200, 200); }
+TEST(PolygonTriangles, SpiralOf1024CornersCoversItsAreaOnce) {
+    expect_triangulated_in_every_pose(spiral(1024), 100, 100);
+}
 
 TEST(PolygonTriangles, CollinearCornersWithoutAreaStillGiveNMinus2Triangles) {
     std::vector<glm::dvec3> corners;
-    for (const double t : {0.0, 1.0, 3.0, 2.0, 5.0, -1.0, 4.0, 4.0}) corners.push_back(glm::dvec3(1, -2, 3) + t * glm::dvec3(0.1, 0.2, 0.3));
+    for (const double t : {0.0, 1.0, 3.0, 2.0, 5.0, -1.0, 4.0, 4.0}) {
+        corners.push_back(glm::dvec3(1, -2, 3) + t * glm::dvec3(0.1, 0.2, 0.3));
+    }
     expect_valid_indices(triangles_of_polygon(corners), corners.size());
 }
 
@@ -230,8 +263,8 @@ TEST(PolygonTriangles, CoincidentCornersStillGiveNMinus2Triangles) {
 }
 
 TEST(PolygonTriangles, SelfIntersectingCornersStillGiveNMinus2Triangles) {
-    const Outline pentagram{on_circle(1, 0), on_circle(1, 4 * std::numbers::pi / 5), on_circle(1, 8 * std::numbers::pi / 5),
-                            on_circle(1, 2 * std::numbers::pi / 5), on_circle(1, 6 * std::numbers::pi / 5)};
+    Outline pentagram;
+    for (int k = 0; k < 5; ++k) pentagram.push_back(on_circle(1.0, 4.0 * std::numbers::pi * k / 5));
     expect_valid_indices(triangles_of_polygon(placed(pentagram, Pose::kTilted)), pentagram.size());
     std::mt19937 random(7);
     std::uniform_real_distribution<double> coordinate(-1.0, 1.0);

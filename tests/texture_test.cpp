@@ -4,6 +4,7 @@
 #include <raster/texture_file.hpp>
 #include <raster/webp.hpp>
 
+#include "support/encoded_images.hpp"
 #include "support/model_files.hpp"
 #include "support/scratch.hpp"
 
@@ -12,6 +13,7 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <string>
 
 using raster::Framebuffer;
@@ -185,4 +187,53 @@ TEST(TextureFile, BadFilesGiveOneLineNamingTheFile) {
             EXPECT_EQ(message.find('\n'), std::string::npos) << message;
         }
     }
+}
+
+namespace {
+
+// The message read_texture throws for `path`, or "" when it reads it.
+std::string texture_error(const std::filesystem::path& path) {
+    try {
+        (void)raster::read_texture(path);
+    } catch (const std::runtime_error& error) {
+        return error.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST(TextureFile, AnImageOfAnyFormatCutShortIsRefusedAsTruncated) {
+    const test_support::ScratchDir dir;
+    test_support::Bytes pixels;
+    for (int i = 0; i < 40 * 30 * 3; ++i) pixels.push_back(static_cast<std::uint8_t>(i * 37 % 251));
+    std::vector<std::pair<std::string, test_support::Bytes>> files{
+        {"t.png", test_support::encode_png(pixels, 40, 30, 3)},    {"t.jpg", test_support::encode_jpeg(pixels, 40, 30, 3)},
+        {"t.bmp", test_support::encode_bmp(pixels, 40, 30, 3)},    {"t.tga", test_support::encode_tga(pixels, 40, 30, 3, false)},
+        {"rle.tga", test_support::encode_tga(pixels, 40, 30, 3, true)}};
+    raster::write_webp_still(Framebuffer(40, 30, pixels), dir / "t.webp");
+    const std::string webp = test_support::read_text(dir / "t.webp");
+    files.emplace_back("t.webp", test_support::Bytes(webp.begin(), webp.end()));
+    const std::map<std::string, std::string> format{{"t.png", "PNG"}, {"t.jpg", "JPEG"}, {"t.bmp", "BMP"},
+                                                     {"t.tga", "TGA"}, {"rle.tga", "TGA"}, {"t.webp", "WebP"}};
+    for (const auto& [name, bytes] : files) {
+        test_support::write_text(dir / name, std::string(bytes.begin(), bytes.end()));
+        EXPECT_EQ(texture_error(dir / name), "") << name;  // whole, it reads
+        test_support::write_text(dir / ("cut-" + name), std::string(bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(bytes.size() * 3 / 5)));
+        EXPECT_EQ(texture_error(dir / ("cut-" + name)),
+                  (dir / ("cut-" + name)).string() + ": truncated image: the " + format.at(name) + " data ends before the picture does");
+    }
+    // A TGA header alone that claims 4000 x 4000 texels: stb_image would fill them with black.
+    const std::string header{0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, static_cast<char>(0xa0), 0x0f, static_cast<char>(0xa0), 0x0f, 24, 0x20};
+    test_support::write_text(dir / "header.tga", header);
+    EXPECT_EQ(texture_error(dir / "header.tga"), (dir / "header.tga").string() + ": truncated image: the TGA data ends before the picture does");
+}
+
+TEST(TextureFile, APngHeaderClaimingMoreTexelsThanAllowedSaysItsSize) {
+    const test_support::ScratchDir dir;
+    const test_support::Bytes small = test_support::encode_png(test_support::Bytes(3 * 4, 0), 2, 2, 3);
+    std::string png(small.begin(), small.end());
+    png.replace(16, 8, std::string{0, 0, static_cast<char>(0xff), static_cast<char>(0xff), 0, 0, static_cast<char>(0xff), static_cast<char>(0xff)});
+    test_support::write_text(dir / "huge.png", png);
+    EXPECT_EQ(texture_error(dir / "huge.png"), (dir / "huge.png").string() + ": image is 65535x65535, more than the 16777216 texels allowed");
 }

@@ -74,7 +74,10 @@ fuzz)
     build fuzz
     for target in fuzz_raster fuzz_mesh fuzz_model; do
         mkdir -p "build/fuzz/corpus/$target"
-        build/fuzz/lab/$target -max_total_time="$seconds" -print_final_stats=1 "build/fuzz/corpus/$target"
+        # New finds go to the first folder; the committed seeds (lab/seeds/) are read, never written.
+        seeds=()
+        [ -d "lab/seeds/$target" ] && seeds=("lab/seeds/$target")
+        build/fuzz/lab/$target -max_total_time="$seconds" -print_final_stats=1 "build/fuzz/corpus/$target" "${seeds[@]}"
     done
     ;;
 lab)

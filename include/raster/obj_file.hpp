@@ -25,6 +25,7 @@ struct ObjOptions {
     double crease_degrees = 60.0;
     bool load_textures = true;
     std::size_t max_texels = kMaxTextureTexels;
+    std::size_t max_line_bytes = kMaxObjLineBytes;  // the fuzzer lowers it to reach the refusal
     // When set (by confinement_root), nothing outside this directory is read: what the model
     // names there is missing, with a warning.
     std::filesystem::path confine{};
