@@ -161,7 +161,9 @@ void add_export_options(CLI::App& app, ExportOptions& options) {
     add_integer_option(app, "--threads", options.threads, 0, 256,
                        "Threads for rendering (sharing each frame's vertices, facets and "
                        "strips of rows) and for encoding animation frames, 0..256; 0 (the "
-                       "default) takes one per core. The picture is the same whatever the count");
+                       "default) takes one per core, and so does a count above the cores, "
+                       "since more would hold memory for no speed. The picture is the same "
+                       "whatever the count");
     add_output_options(app, options);
 }
 
@@ -310,7 +312,7 @@ std::string export_animation(const CLI::App& app, const ExportOptions& options, 
                              const std::function<void(raster::Framebuffer&, int)>& render) {
     check_output(app, options);
     const int spacing_ms = (1000 + fps / 2) / fps;
-    raster::AnimationEncoder encoder(options.width, options.height, spacing_ms, {options.effort, options.encoder, options.threads});
+    raster::AnimationEncoder encoder(options.width, options.height, spacing_ms, {options.effort, options.encoder, options.threads_in_use()});
     raster::Framebuffer frame(options.width, options.height);
     Progress progress(app.get_name(), options);
     for (int i = 0; i < frames; ++i) {

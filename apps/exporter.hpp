@@ -7,7 +7,9 @@
 
 #include <CLI/CLI.hpp>
 #include <cstdint>
+#include <algorithm>
 #include <functional>
+#include <thread>
 #include <optional>
 #include <span>
 #include <string>
@@ -29,7 +31,12 @@ struct ExportOptions {
     int threads = 0;  // for rendering bands and encoding frames; 0: one per core
     std::vector<raster::InputRecord> inputs;  // every file read: no output may replace one
 
-    [[nodiscard]] raster::RenderOptions render_options() const { return {threads}; }
+    // More threads than cores would only hold memory: the count asked for is capped there.
+    [[nodiscard]] int threads_in_use() const {
+        const int cores = static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
+        return threads == 0 ? 0 : std::min(threads, cores);
+    }
+    [[nodiscard]] raster::RenderOptions render_options() const { return {threads_in_use()}; }
 };
 
 // A CLI11 app whose help is wrapped to 80 columns and whose --version names the program.

@@ -10,6 +10,7 @@
 #include "support/model_files.hpp"
 #include "support/scratch.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <gtest/gtest.h>
@@ -186,6 +187,46 @@ TEST(Golden, ModelsThroughEachShadingAndView) {
         raster::ModelStage(copy, c.view, image.width(), image.height()).render(image, depth, c.turn);
         EXPECT_TRUE(matches_snapshot(image, "models/crate-" + c.name));
     }
+}
+
+// Faces of many corners as CAD and LightWave exports write them, each one face: a ring cut open
+// by a slit (66 corners), a star and a comb, drawn exactly as their outlines.
+TEST(Golden, ConcaveFacesAsTheirOutlines) {
+    std::string obj;
+    std::size_t next = 1;
+    const auto face = [&](const std::vector<std::pair<double, double>>& outline, double dx, double dy) {
+        std::string corners = "f";
+        for (const auto& [x, y] : outline) {
+            obj += "v " + std::to_string(x + dx) + " " + std::to_string(y + dy) + " 0\n";
+            corners += " " + std::to_string(next++);
+        }
+        obj += corners + "\n";
+    };
+    const double pi = 3.14159265358979;
+    std::vector<std::pair<double, double>> ring;
+    for (int i = 0; i <= 32; ++i) ring.emplace_back(std::cos(2 * pi * i / 32), std::sin(2 * pi * i / 32));
+    for (int i = 0; i <= 32; ++i) ring.emplace_back(0.55 * std::cos(-2 * pi * i / 32), 0.55 * std::sin(-2 * pi * i / 32));
+    std::vector<std::pair<double, double>> star;
+    for (int i = 0; i < 10; ++i) star.emplace_back((i % 2 == 0 ? 1.0 : 0.4) * -std::sin(pi * i / 5), (i % 2 == 0 ? 1.0 : 0.4) * std::cos(pi * i / 5));
+    std::vector<std::pair<double, double>> comb{{-1, -1}, {1, -1}};  // counter-clockwise, as OBJ's fronts are
+    for (int tooth = 4; tooth >= 0; --tooth) {
+        const double left = -1 + 0.45 * tooth, right = left + 0.2;
+        if (tooth < 4) comb.emplace_back(right, -0.4);
+        comb.emplace_back(right, 1);
+        comb.emplace_back(left, 1);
+        if (tooth > 0) comb.emplace_back(left, -0.4);
+    }
+    face(ring, -1.1, 1.1);
+    face(star, 1.1, 1.1);
+    face(comb, 0.0, -1.1);
+    raster::ModelView view;
+    view.orthographic = true;
+    view.eye = glm::dvec3(0.0, 0.0, 5.0);
+    view.shading = raster::ShadingMethod::unlit;
+    Framebuffer image(160, 160);
+    raster::DepthBuffer depth;
+    raster::ModelStage(std::make_shared<raster::Model>(raster::parse_obj(obj, "")), view, image.width(), image.height()).render(image, depth, 0.0);
+    EXPECT_TRUE(matches_snapshot(image, "models/concave-faces"));
 }
 
 // The Ptah and raster-engine scenes: stills, and the flight every hundredth frame.
