@@ -8,11 +8,14 @@
 #include <cstdio>
 #include <cerrno>
 #include <charconv>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
+#include <sched.h>
+#include <thread>
 #include <unistd.h>
 
 namespace {
@@ -56,6 +59,14 @@ public:
 bool is_terminal(int descriptor) { return ::isatty(descriptor) == 1; }
 
 }  // namespace
+
+int ExportOptions::threads_in_use() const {
+    cpu_set_t allowed;
+    CPU_ZERO(&allowed);
+    const int cores = ::sched_getaffinity(0, sizeof allowed, &allowed) == 0 ? CPU_COUNT(&allowed)
+                                                                            : static_cast<int>(std::thread::hardware_concurrency());
+    return threads == 0 ? std::max(cores, 1) : std::min(threads, std::max(cores, 1));
+}
 
 void configure_app(CLI::App& app) {
     auto formatter = std::make_shared<WrappingFormatter>();
@@ -110,7 +121,11 @@ CLI::Validator finite_number(double low, double high, bool open_ends, const std:
                 if (digits.empty() || end != digits.data() + digits.size() || (error != std::errc() && error != std::errc::result_out_of_range)) {
                     return quoted + " is not a number";
                 }
-                if (error == std::errc::result_out_of_range || !std::isfinite(value)) return "must be finite, not " + quoted;
+                if (error == std::errc::result_out_of_range) {
+                    const std::string copy(digits);
+                    value = std::strtod(copy.c_str(), nullptr);  // tells overflow (huge) from underflow (tiny, as good as 0)
+                }
+                if (!std::isfinite(value)) return "must be finite, not " + quoted;
                 const bool inside = open_ends ? value > low && value < high : value >= low && value <= high;
                 return inside ? std::string() : range + ", not " + quoted;
             },
@@ -275,7 +290,7 @@ int run_exporter(CLI::App& app, const ExportOptions& options, int argc, char** a
 namespace {
 
 std::string describe_destination(const ExportOptions& options) {
-    return options.output == "-" ? "Wrote standard output" : "Wrote " + options.output;
+    return options.output == "-" ? "Wrote standard output" : "Wrote " + raster::printable(options.output);
 }
 
 }  // namespace

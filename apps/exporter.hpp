@@ -7,9 +7,7 @@
 
 #include <CLI/CLI.hpp>
 #include <cstdint>
-#include <algorithm>
 #include <functional>
-#include <thread>
 #include <optional>
 #include <span>
 #include <string>
@@ -31,11 +29,9 @@ struct ExportOptions {
     int threads = 0;  // for rendering bands and encoding frames; 0: one per core
     std::vector<raster::InputRecord> inputs;  // every file read: no output may replace one
 
-    // More threads than cores would only hold memory: the count asked for is capped there.
-    [[nodiscard]] int threads_in_use() const {
-        const int cores = static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
-        return threads == 0 ? 0 : std::min(threads, cores);
-    }
+    // More threads than the cores this process may run on would only hold memory: the count
+    // asked for is capped there, and 0 takes one per such core.
+    [[nodiscard]] int threads_in_use() const;
     [[nodiscard]] raster::RenderOptions render_options() const { return {threads_in_use()}; }
 };
 

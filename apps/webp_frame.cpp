@@ -37,7 +37,7 @@ int main(int argc, char** argv) {
         }
         const std::vector<std::uint8_t> bytes = raster::encode_webp_still(*found, options.effort);
         deliver(options, bytes);
-        return "Wrote " + (options.output == "-" ? std::string("standard output") : options.output) + ": frame " +
+        return "Wrote " + (options.output == "-" ? std::string("standard output") : raster::printable(options.output)) + ": frame " +
                std::to_string(index) + " of " + raster::printable(input) + ", " + std::to_string(info.width) + "x" +
                std::to_string(info.height) + ", " + std::to_string(bytes.size()) + " bytes";
     });

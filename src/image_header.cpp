@@ -150,7 +150,8 @@ ImageHeader read_jpeg(Bytes bytes) {
 ImageHeader read_tga(Bytes bytes) {
     const std::uint64_t width = le16(bytes, 12), height = le16(bytes, 14);
     const std::uint64_t pixel_bytes = (bytes[16] + 7U) / 8U;  // 15-bit pixels take two bytes
-    const std::uint64_t map_bytes = bytes[1] == 1 ? le16(bytes, 5) * ((bytes[7] + 7U) / 8U) : 0;
+    // stb_image skips the colour map's first-entry index as bytes before the map: count them too.
+    const std::uint64_t map_bytes = bytes[1] == 1 ? le16(bytes, 3) + le16(bytes, 5) * ((bytes[7] + 7U) / 8U) : 0;
     const std::uint64_t start = 18 + bytes[0] + map_bytes;  // after the image ID and the colour map
     const std::uint64_t pixels = width * height;
     const auto header = [&](bool truncated) {

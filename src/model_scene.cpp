@@ -81,7 +81,8 @@ ModelStage::ModelStage(std::shared_ptr<const Model> model, const ModelView& view
         const double distance = view.orthographic ? 3.0 : 1.0 / std::sin(narrower);
         eye = target_ + mirrored(three_quarter_direction(view.up)) * distance;
     }
-    if (!finite(eye) || !finite(target_)) throw std::invalid_argument("eye and target must be finite points");
+    if (!view.eye && !finite(eye)) throw std::invalid_argument("--fov is too narrow to frame the model from any finite distance");
+    if (!finite(eye) || !finite(target_)) throw std::invalid_argument("--eye and --target must lie within float range of the model");
 
     if (!(glm::length(target_ - eye) > 1e-12)) {
         throw std::invalid_argument(view.target ? "--eye and --target are the same point; the camera needs a direction to look in"

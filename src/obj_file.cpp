@@ -12,6 +12,7 @@
 #include <charconv>
 #include <cmath>
 #include <map>
+#include <unordered_set>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -51,12 +52,9 @@ InputRules text_rules(std::string role, std::string expected, const std::filesys
     return rules;
 }
 
-// The line the survey found a name on, for warnings; 0 when unknown.
-std::size_t line_of(const std::vector<detail::NamedAt>& list, std::string_view name) {
-    for (const detail::NamedAt& named : list) {
-        if (named.name == name) return named.line;
-    }
-    return 0;
+// Notes a file the model names, whether or not it can be read: no output may replace it.
+void note_named(std::vector<InputRecord>& sources, const std::filesystem::path& path, const char* role) {
+    if (FileIdentity identity; identity_of(path, identity)) sources.push_back({path, identity, role});
 }
 
 // Reads each MTL file the OBJ names, from beside the OBJ (or from text given in memory), and
@@ -75,19 +73,21 @@ public:
             std::istringstream in{std::string(*text_)};
             tinyobj::LoadMtl(names, materials, &in, &ignored_warnings, &ignored_errors);
         } else {
+            note_named(sources_, path, "material library");
             try {
                 InputFile file(path, text_rules("material library", "an MTL text file", options_.confine));
-                for_each_line(file, printable(path.string()), options_.max_line_bytes, [](std::string_view, std::size_t) {});
+                const std::string shown = printable(path.string());
+                for_each_line(file, shown, options_.max_line_bytes, [](std::string_view, std::size_t) {});
                 detail::InputStreamBuf buffer(file);
                 std::istream in(&buffer);
                 tinyobj::LoadMtl(names, materials, &in, &ignored_warnings, &ignored_errors);
-                sources_.push_back(file.record());
             } catch (const std::runtime_error& problem) {
-                const std::size_t line = line_of(survey_.libraries, name);
-                const std::string at = line > 0 ? obj_name_ + ":" + std::to_string(line) + ": " : obj_name_ + ": ";
-                warnings_.push_back(at + "material library '" + printable(path.string()) + "' " + problem.what() +
-                                    "; drawing the default material");
-                failed_ = true;
+                if (failures_++ > 0) return false;  // one warning for the first; the count for the rest
+                const auto line = survey_.library_lines.find(name);
+                const std::string at = obj_name_ + (line != survey_.library_lines.end() ? ":" + std::to_string(line->second) : "") + ": ";
+                const std::string what = problem.what(), shown = printable(path.string());
+                // A line-cap refusal already names the library and its line.
+                first_failure_ = at + (what.starts_with(shown + ":") ? what : "material library '" + shown + "' " + what);
                 return false;
             }
         }
@@ -95,9 +95,14 @@ public:
         return true;
     }
     [[nodiscard]] const std::filesystem::path& directory_of(std::size_t material) const { return directories_.at(material); }
-    [[nodiscard]] const std::vector<std::string>& warnings() const noexcept { return warnings_; }
+    // At most one warning, however many libraries failed.
+    [[nodiscard]] std::vector<std::string> warnings() const {
+        if (failures_ == 0) return {};
+        const std::string more = failures_ > 1 ? " (and " + std::to_string(failures_ - 1) + " more material libraries)" : "";
+        return {first_failure_ + more + "; drawing the default material"};
+    }
     [[nodiscard]] std::vector<InputRecord>& sources() noexcept { return sources_; }
-    [[nodiscard]] bool any_failed() const noexcept { return failed_; }
+    [[nodiscard]] bool any_failed() const noexcept { return failures_ > 0; }
 
 private:
     std::filesystem::path directory_;
@@ -106,9 +111,9 @@ private:
     const detail::ObjSurvey& survey_;
     const ObjOptions& options_;
     std::vector<std::filesystem::path> directories_;
-    std::vector<std::string> warnings_;
+    std::string first_failure_;
+    std::size_t failures_ = 0;
     std::vector<InputRecord> sources_;
-    bool failed_ = false;
 };
 
 // Checks one index of a face corner against the count of what it names.
@@ -206,13 +211,31 @@ std::runtime_error load_failure(const std::string& err, const std::string& name)
 void warn_of_missing_materials(Model& model, const std::string& name, const detail::ObjSurvey& survey,
                                const std::vector<tinyobj::material_t>& materials, bool a_library_failed) {
     if (a_library_failed) return;
+    std::unordered_set<std::string_view> defined;
+    for (const tinyobj::material_t& m : materials) defined.insert(m.name);
+    const detail::NamedAt* first = nullptr;
+    std::size_t missing = 0;
     for (const detail::NamedAt& used : survey.materials) {
-        const bool found = std::any_of(materials.begin(), materials.end(), [&](const tinyobj::material_t& m) { return m.name == used.name; });
-        if (found) continue;
-        const std::string at = name + ":" + std::to_string(used.line) + ": material '" + printable(used.name) + "' ";
-        model.warnings.push_back(at + (survey.libraries.empty() ? "is used, but the file names no material library"
-                                                                : "is in none of the file's material libraries") +
-                                 "; drawing the default material");
+        if (defined.contains(used.name)) continue;
+        if (missing++ == 0) first = &used;
+    }
+    if (first == nullptr) return;
+    const std::string more = missing > 1 ? " (nor " + std::to_string(missing - 1) + " more materials the faces use)" : "";
+    model.warnings.push_back(name + ":" + std::to_string(first->line) + ": material '" + printable(first->name, 80) + "' " +
+                             (survey.library_lines.empty() ? "is used, but the file names no material library"
+                                                           : "is in none of the file's material libraries") +
+                             more + "; drawing the default material");
+}
+
+// tinyobjloader must have read the statements the survey checked, no more and no fewer: a
+// disagreement would leave a number unchecked.
+void check_same_reading(const tinyobj::attrib_t& attrib, const detail::ObjSurvey& survey) {
+    const std::array<std::size_t, 3> read = {attrib.vertices.size() / 3, attrib.texcoords.size() / 2, attrib.normals.size() / 3};
+    if (read != survey.defined) {
+        throw std::runtime_error("the file's v, vt and vn lines were counted as " + std::to_string(survey.defined[0]) + ", " +
+                                 std::to_string(survey.defined[1]) + " and " + std::to_string(survey.defined[2]) + " by one reading and " +
+                                 std::to_string(read[0]) + ", " + std::to_string(read[1]) + " and " + std::to_string(read[2]) +
+                                 " by the other; please report this file");
     }
 }
 
@@ -225,9 +248,10 @@ Model model_from(std::istream& obj, const std::string& name, const detail::ObjSu
     if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &ignored_warnings, &err, &obj, &libraries, false, false)) {
         throw load_failure(err, name);
     }
+    check_same_reading(attrib, survey);
     Model model;
     model.warnings = survey.warnings;
-    model.warnings.insert(model.warnings.end(), libraries.warnings().begin(), libraries.warnings().end());
+    for (std::string& warning : libraries.warnings()) model.warnings.push_back(std::move(warning));
     warn_of_missing_materials(model, name, survey, materials, libraries.any_failed());
     model.sources = std::move(libraries.sources());
     std::size_t skipped = survey.skipped_faces;
@@ -252,6 +276,7 @@ Model model_from(std::istream& obj, const std::string& name, const detail::ObjSu
                 std::error_code error;
                 std::filesystem::path map = std::filesystem::weakly_canonical(given, error);
                 if (error) map = given;
+                note_named(model.sources, given, "texture");
                 if (part.mesh.uvs.empty()) {
                     model.warnings.push_back(name + ": " + material + " has a map but its faces have no texture coordinates; drawing its colour");
                 } else if (const auto found = loaded.find(map); found != loaded.end()) {
@@ -278,8 +303,9 @@ Model model_from(std::istream& obj, const std::string& name, const detail::ObjSu
     if (translucent) model.warnings.push_back(name + ": transparency (d below 1) is not supported; drawing those materials opaque");
     // One line per distinct warning, however often the file repeats its cause.
     std::vector<std::string> distinct;
+    std::unordered_set<std::string> seen;
     for (std::string& warning : model.warnings) {
-        if (std::find(distinct.begin(), distinct.end(), warning) == distinct.end()) distinct.push_back(std::move(warning));
+        if (seen.insert(warning).second) distinct.push_back(std::move(warning));
     }
     model.warnings = std::move(distinct);
     if (model.parts.empty()) throw BadModel("no faces to draw");
@@ -309,17 +335,9 @@ Model read_obj(const std::filesystem::path& path, const ObjOptions& options) {
 Model parse_obj(std::string_view obj, std::string_view mtl, ObjOptions options) {
     const std::string name = "<memory>";
     try {
-        const detail::ObjSurvey survey = detail::survey_obj(name, kMaxFaceCorners, [&](const auto& visit) {
-            std::size_t number = 1;
-            for (std::size_t start = 0; start <= obj.size(); ++number) {
-                const std::size_t end = std::min(obj.find('\n', start), obj.size());
-                if (end - start > options.max_line_bytes) {
-                    throw std::runtime_error(name + ":" + std::to_string(number) + ": a line longer than the most raster reads in one line");
-                }
-                visit(obj.substr(start, end - start), number);
-                start = end + 1;
-            }
-        });
+        if (obj.starts_with("\xEF\xBB\xBF")) obj.remove_prefix(3);  // a UTF-8 byte order mark, as a file's is skipped
+        const detail::ObjSurvey survey = detail::survey_obj(
+            name, kMaxFaceCorners, [&](const auto& visit) { for_each_line(obj, name, options.max_line_bytes, visit); });
         std::istringstream in{std::string(obj)};
         MaterialLibraries libraries(".", mtl, name, survey, options);
         return model_from(in, name, survey, libraries, options, false);

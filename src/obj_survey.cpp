@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <stdexcept>
 #include <system_error>
@@ -17,8 +19,11 @@ namespace {
 // v, vt and vn: what a face corner names, in the order of the corner's fields.
 enum Kind : std::size_t { kPosition, kUv, kNormal };
 constexpr std::array<const char*, 3> kKindName = {"vertex", "texture coordinate", "normal"};
-// How many leading numbers of each kind raster uses (vt's third, like v's colours, is ignored).
+constexpr std::array<const char*, 3> kKindPlural = {"vertices", "texture coordinates", "normals"};
+// How many leading numbers of each kind raster uses (vt's third, like v's colours, is ignored),
+// and how many must be there (a texture coordinate may give u alone).
 constexpr std::array<std::size_t, 3> kUsedNumbers = {3, 2, 3};
+constexpr std::array<std::size_t, 3> kNeededNumbers = {3, 1, 3};
 
 // A coordinate that is not the number it should be: where, and why.
 struct BadNumber {
@@ -27,9 +32,10 @@ struct BadNumber {
     std::string problem;
 };
 
+// Words as tinyobjloader splits them: at spaces and tabs only.
 std::vector<std::string_view> words_of(std::string_view line) {
     std::vector<std::string_view> words;
-    constexpr std::string_view kSpace = " \t\r\v\f";
+    constexpr std::string_view kSpace = " \t";
     for (std::size_t start = line.find_first_not_of(kSpace); start != std::string_view::npos;) {
         const std::size_t end = std::min(line.find_first_of(kSpace, start), line.size());
         words.push_back(line.substr(start, end - start));
@@ -38,17 +44,23 @@ std::vector<std::string_view> words_of(std::string_view line) {
     return words;
 }
 
-// Why a word is not a finite coordinate that a float holds, or "" when it is one.
+// Why a word is not a finite coordinate that a float holds, or "" when it is one (a number too
+// small for a float is read as 0, as written).
 std::string number_problem(std::string_view word) {
+    const std::string quoted = "'" + printable(word, 40) + "'";
     std::string_view digits = word;
     if (digits.size() > 1 && digits[0] == '+' && digits[1] != '-') digits.remove_prefix(1);  // from_chars takes no '+'
     double value = 0.0;
     const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-    const std::string quoted = "'" + printable(word, 40) + "'";
     if (end != digits.data() + digits.size() || (error != std::errc() && error != std::errc::result_out_of_range)) {
         return quoted + ", which is not a number";
     }
-    if (error == std::errc::result_out_of_range) return quoted + ", which is out of range";
+    if (error == std::errc::result_out_of_range) {
+        const std::string copy(digits);
+        errno = 0;
+        value = std::strtod(copy.c_str(), nullptr);  // tells overflow (huge) from underflow (tiny)
+        if (std::abs(value) <= 1.0) return "";
+    }
     if (!std::isfinite(value)) return quoted + ", which is not a finite number";
     if (std::abs(value) > std::numeric_limits<float>::max()) return quoted + ", which is beyond the largest coordinate raster stores";
     return "";
@@ -72,9 +84,13 @@ std::size_t resolved_index(std::string_view text, std::size_t defined, Kind kind
     return static_cast<std::size_t>(resolved - 1);
 }
 
-void remember(std::vector<NamedAt>& list, std::string_view name, std::size_t line) {
-    const bool known = std::any_of(list.begin(), list.end(), [&](const NamedAt& n) { return n.name == name; });
-    if (!known) list.push_back({std::string(name), line});
+// The statement a line makes, as tinyobjloader recognises it: its keyword followed by a space
+// or a tab ("v" alone at the end of a line is no vertex to it, and so none to us).
+std::string_view keyword_of(std::string_view line) {
+    const std::size_t start = line.find_first_not_of(" \t");
+    if (start == std::string_view::npos) return {};
+    const std::size_t end = line.find_first_of(" \t", start);
+    return end == std::string_view::npos ? std::string_view() : line.substr(start, end - start);
 }
 
 }  // namespace
@@ -82,8 +98,8 @@ void remember(std::vector<NamedAt>& list, std::string_view name, std::size_t lin
 ObjSurvey survey_obj(const std::string& name, std::size_t max_corners,
                      const std::function<void(const std::function<void(std::string_view, std::size_t)>&)>& lines) {
     ObjSurvey survey;
-    std::array<std::size_t, 3> defined{};
     std::array<std::vector<BadNumber>, 3> bad;
+    std::size_t empty_mtllib_line = 0, empty_mtllib_count = 0;
     const auto check_used = [&](Kind kind, std::size_t index, const std::string& at) {
         auto& list = bad[kind];
         const auto found = std::lower_bound(list.begin(), list.end(), index, [](const BadNumber& b, std::size_t i) { return b.index < i; });
@@ -92,19 +108,20 @@ ObjSurvey survey_obj(const std::string& name, std::size_t max_corners,
                                  std::to_string(found->line) + " gives it " + found->problem);
     };
     lines([&](std::string_view line, std::size_t number) {
-        const std::vector<std::string_view> words = words_of(line);
-        if (words.empty()) return;
-        const std::string_view keyword = words[0];
-        const std::string at = name + ":" + std::to_string(number) + ": ";
+        if (number == 1 && line.starts_with("\xEF\xBB\xBF")) line.remove_prefix(3);  // a UTF-8 byte order mark
+        const std::string_view keyword = keyword_of(line);
         const auto kind = keyword == "v" ? kPosition : keyword == "vt" ? kUv : keyword == "vn" ? kNormal : std::size_t{3};
+        if (keyword.empty() || (kind == 3 && keyword != "f" && keyword != "mtllib" && keyword != "usemtl")) return;
+        const std::vector<std::string_view> words = words_of(line);
+        const std::string at = name + ":" + std::to_string(number) + ": ";
         if (kind < 3) {
-            for (std::size_t w = 1; w < words.size() && w <= kUsedNumbers[kind]; ++w) {
-                if (std::string problem = number_problem(words[w]); !problem.empty()) {
-                    bad[kind].push_back({defined[kind], number, std::move(problem)});
-                    break;
-                }
+            std::string problem;
+            for (std::size_t w = 1; w < words.size() && w <= kUsedNumbers[kind] && problem.empty(); ++w) problem = number_problem(words[w]);
+            if (problem.empty() && words.size() - 1 < kNeededNumbers[kind]) {
+                problem = "only " + std::to_string(words.size() - 1) + " of its " + std::to_string(kNeededNumbers[kind]) + " coordinates";
             }
-            ++defined[kind];
+            if (!problem.empty()) bad[kind].push_back({survey.defined[kind], number, std::move(problem)});
+            ++survey.defined[kind];
         } else if (keyword == "f") {
             if (words.size() - 1 > max_corners) {
                 throw std::runtime_error(at + "a face of more than " + std::to_string(max_corners) + " corners");
@@ -128,21 +145,28 @@ ObjSurvey survey_obj(const std::string& name, std::size_t max_corners,
                 for (std::size_t k = 0; k <= count; ++k) {
                     if (fields[k].empty()) continue;  // v//vn
                     const auto field_kind = static_cast<Kind>(k);
-                    check_used(field_kind, resolved_index(fields[k], defined[k], field_kind, at), at);
+                    check_used(field_kind, resolved_index(fields[k], survey.defined[k], field_kind, at), at);
                 }
             }
         } else if (keyword == "mtllib") {
-            if (words.size() < 2) survey.warnings.push_back(at + "mtllib names no file");
-            for (std::size_t w = 1; w < words.size(); ++w) remember(survey.libraries, words[w], number);
-        } else if (keyword == "usemtl" && words.size() >= 2) {
-            remember(survey.materials, words[1], number);
+            if (words.size() < 2 && empty_mtllib_count++ == 0) empty_mtllib_line = number;
+            for (std::size_t w = 1; w < words.size(); ++w) survey.library_lines.emplace(std::string(words[w]), number);
+        } else if (words.size() >= 2 && survey.material_lines.emplace(std::string(words[1]), number).second) {
+            survey.materials.push_back({std::string(words[1]), number});
         }
     });
+    if (empty_mtllib_count > 0) {
+        survey.warnings.push_back(name + ":" + std::to_string(empty_mtllib_line) + ": mtllib names no file" +
+                                  (empty_mtllib_count > 1 ? " (nor do " + std::to_string(empty_mtllib_count - 1) + " more mtllib lines)" : ""));
+    }
+    // One warning per kind, however many lines repeat its cause.
     for (std::size_t kind = 0; kind < 3; ++kind) {
-        for (const BadNumber& b : bad[kind]) {  // a face using one would have thrown
-            survey.warnings.push_back(name + ":" + std::to_string(b.line) + ": " + kKindName[kind] + " " + std::to_string(b.index + 1) +
-                                      " is " + b.problem + "; no face uses it");
-        }
+        if (bad[kind].empty()) continue;  // a face using one would have thrown
+        const BadNumber& first = bad[kind].front();
+        const std::size_t more = bad[kind].size() - 1;
+        survey.warnings.push_back(name + ":" + std::to_string(first.line) + ": " + kKindName[kind] + " " + std::to_string(first.index + 1) +
+                                  " has " + first.problem + "; no face uses it" +
+                                  (more > 0 ? " (nor " + std::to_string(more) + " more such " + kKindPlural[kind] + ")" : ""));
     }
     return survey;
 }

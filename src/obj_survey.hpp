@@ -1,9 +1,11 @@
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <functional>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 // The first of two readings of an OBJ file: every line checked in raster's own words before
@@ -18,9 +20,11 @@ struct NamedAt {
 };
 
 struct ObjSurvey {
-    std::vector<std::string> warnings;  // each "FILE:LINE: ..."
-    std::vector<NamedAt> libraries;     // mtllib names, first mention of each
-    std::vector<NamedAt> materials;     // usemtl names, first use of each
+    std::vector<std::string> warnings;  // each "FILE:LINE: ...", at most one per cause
+    std::unordered_map<std::string, std::size_t> library_lines;        // mtllib names, first line of each
+    std::unordered_map<std::string, std::size_t> material_lines;      // usemtl names, first line of each
+    std::vector<NamedAt> materials;     // usemtl names in order of first use
+    std::array<std::size_t, 3> defined{};  // v, vt and vn statements, as tinyobjloader counts them
     std::size_t skipped_faces = 0;      // faces of fewer than 3 corners
 };
 

@@ -10,7 +10,9 @@
 #include <algorithm>
 #include <chrono>
 #include <fcntl.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 using test_support::kRender;
@@ -40,6 +42,7 @@ TEST(HostileInputs, RenderNeverWritesOverAFileItReads) {
     const ScratchDir dir;
     write_cube(dir);
     std::filesystem::create_symlink("cube.obj", dir / "link.webp");
+    std::filesystem::create_hard_link(dir / "cube.obj", dir / "hard.webp");
     const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
         {{"cube.obj", "cube.obj"}, "render: cannot write 'cube.obj': it is the model this run reads; choose another output name\n"},
         {{"cube.obj", "cube.mtl"}, "render: cannot write 'cube.mtl': it is the material library this run reads; choose another output name\n"},
@@ -48,6 +51,7 @@ TEST(HostileInputs, RenderNeverWritesOverAFileItReads) {
          "render: cannot write 'tex.png': it is the texture this run reads; choose another output name\n"},
         {{"cube.obj", "--follow-symlinks", "link.webp"},
          "render: cannot write 'link.webp': it is the model 'cube.obj' this run reads; choose another output name\n"},
+        {{"cube.obj", "hard.webp"}, "render: cannot write 'hard.webp': it is the model 'cube.obj' this run reads; choose another output name\n"},
     };
     const std::string obj = read_text(dir / "cube.obj"), mtl = read_text(dir / "cube.mtl"), png = read_text(dir / "tex.png");
     for (const auto& [arguments, message] : cases) {
@@ -58,7 +62,49 @@ TEST(HostileInputs, RenderNeverWritesOverAFileItReads) {
     EXPECT_EQ(read_text(dir / "cube.obj"), obj);
     EXPECT_EQ(read_text(dir / "cube.mtl"), mtl);
     EXPECT_EQ(read_text(dir / "tex.png"), png);
-    EXPECT_EQ(dir.entries(), (std::vector<std::string>{"cube.mtl", "cube.obj", "link.webp", "tex.png"}));
+    EXPECT_EQ(dir.entries(), (std::vector<std::string>{"cube.mtl", "cube.obj", "hard.webp", "link.webp", "tex.png"}));
+}
+
+TEST(HostileInputs, RenderNeverWritesOverAFileTheModelNamesEvenIfItWasNotRead) {
+    const ScratchDir dir;
+    write_cube(dir);
+    test_support::write_text(dir / "tex.png", "GIF89a, named like a PNG");  // refused as a texture, warned of
+    test_support::write_text(dir / "long.mtl", "newmtl skin\n#" + std::string(5 << 20, 'x') + "\n");  // refused for its line
+    test_support::write_text(dir / "long.obj", test_support::textured_cube_obj("long.mtl", "skin"));
+    // No texture coordinates: the map is never opened, but the file is still the model's.
+    test_support::write_text(dir / "flat.obj", "mtllib cube.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl skin\nf 1 2 3\n");
+    const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
+        {{"cube.obj", "tex.png"}, "render: cannot write 'tex.png': it is the texture this run reads; choose another output name\n"},
+        {{"long.obj", "long.mtl"}, "render: cannot write 'long.mtl': it is the material library this run reads; choose another output name\n"},
+        {{"flat.obj", "tex.png"}, "render: cannot write 'tex.png': it is the texture this run reads; choose another output name\n"},
+    };
+    const std::string png = read_text(dir / "tex.png"), mtl = read_text(dir / "long.mtl");
+    for (const auto& [arguments, message] : cases) {
+        const auto result = run(kRender, arguments, dir.path());
+        EXPECT_EQ(result.exit_code, 1) << ::testing::PrintToString(arguments);
+        EXPECT_EQ(result.err.substr(result.err.find("render: cannot")), message) << result.err;
+    }
+    EXPECT_EQ(read_text(dir / "tex.png"), png);
+    EXPECT_EQ(read_text(dir / "long.mtl"), mtl);
+}
+
+TEST(HostileInputs, MemoryFollowsTheCoresNotTheThreadCountTyped) {
+    const ScratchDir dir;
+    write_cube(dir);
+    // Peak resident memory of one run, from the kernel's accounting of the finished child.
+    const auto peak_kib = [&](const std::string& threads) {
+        const int pid = test_support::start(kRender, {"cube.obj", "--turntable", "16", "--width", "600", "--height", "600",
+                                                      "--threads", threads, "out-" + threads + ".webp"},
+                                            dir.path());
+        int status = 0;
+        struct rusage usage {};
+        EXPECT_EQ(::wait4(pid, &status, 0, &usage), pid);
+        EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << threads;
+        return usage.ru_maxrss;
+    };
+    const long two = peak_kib("2"), many = peak_kib("64");
+    EXPECT_LE(static_cast<double>(many), 1.5 * static_cast<double>(two)) << two << " KiB with 2 threads, " << many << " with 64";
+    EXPECT_EQ(read_text(dir / "out-2.webp"), read_text(dir / "out-64.webp"));
 }
 
 TEST(HostileInputs, WebpFrameNeverWritesOverItsInput) {
@@ -160,7 +206,7 @@ TEST(HostileInputs, ConfineKeepsEveryReadInsideTheDirectory) {
     EXPECT_EQ(texture_outside.err, "render: private.png: lies outside '" + root + "', where reading is confined\n");
     EXPECT_FALSE(std::filesystem::exists(dir / "loose.webp"));
     EXPECT_FALSE(std::filesystem::exists(dir / "t.webp"));
-    EXPECT_EQ(run(kRender, {"loose.obj", "--confine", "nowhere"}, dir.path()).err, "render: 'nowhere': no such file\n");
+    EXPECT_EQ(run(kRender, {"loose.obj", "--confine", "nowhere"}, dir.path()).err, "render: 'nowhere' does not exist\n");
 }
 
 TEST(HostileInputs, ATruncatedTextureIsAWarningAndTheMaterialsColourOrAnErrorThroughTexture) {

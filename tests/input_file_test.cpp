@@ -63,7 +63,7 @@ TEST(InputFile, DirectoriesFifosDevicesAndSocketsAreRefusedWithoutBlocking) {
     EXPECT_EQ(refusal(dir / "pipe"), "is a FIFO, not a regular file");  // no writer: a blocking open would wait forever
     EXPECT_EQ(refusal("/dev/zero"), "is a device, not a regular file");
     EXPECT_EQ(refusal(dir.path()), "is a directory, not a file");
-    EXPECT_EQ(refusal(dir / "missing"), "no such file");
+    EXPECT_EQ(refusal(dir / "missing"), "does not exist");
     EXPECT_LT(seconds_since(start), 5.0);
 }
 
@@ -108,11 +108,23 @@ TEST(InputFile, ConfinementRefusesWhatLiesOutsideEvenThroughLinksAndDotDot) {
 
 TEST(InputFile, LinesAreVisitedWithTheirNumbersAndALongLineIsRefusedByNumber) {
     const ScratchDir dir;
-    test_support::write_text(dir / "lines", "abc\n\nthird\r\nlast");
+    // Ends as tinyobjloader reads them: "\n", "\r\n" and a lone "\r"; a line of exactly the cap is read.
+    test_support::write_text(dir / "lines", "abc\n\nthird\r\nfourth\rsixteen-letters!\nlast");
     raster::InputFile file(dir / "lines", rules());
     std::vector<std::pair<std::string, std::size_t>> seen;
     raster::for_each_line(file, "lines", 16, [&](std::string_view line, std::size_t number) { seen.emplace_back(line, number); });
-    EXPECT_EQ(seen, (std::vector<std::pair<std::string, std::size_t>>{{"abc", 1}, {"", 2}, {"third\r", 3}, {"last", 4}}));
+    EXPECT_EQ(seen, (std::vector<std::pair<std::string, std::size_t>>{
+                        {"abc", 1}, {"", 2}, {"third", 3}, {"fourth", 4}, {"sixteen-letters!", 5}, {"last", 6}}));
+    // The same text in memory, and a "\r\n" split between two reads of the file, end lines alike.
+    std::vector<std::pair<std::string, std::size_t>> in_memory;
+    raster::for_each_line("abc\n\nthird\r\nfourth\rsixteen-letters!\nlast", "lines", 16,
+                          [&](std::string_view line, std::size_t number) { in_memory.emplace_back(line, number); });
+    EXPECT_EQ(in_memory, seen);
+    test_support::write_text(dir / "split", "abc" + std::string((1 << 16) - 4, 'x') + "\r\nnext\n");
+    raster::InputFile split(dir / "split", rules());
+    std::vector<std::size_t> lengths;
+    raster::for_each_line(split, "split", 1 << 20, [&](std::string_view line, std::size_t) { lengths.push_back(line.size()); });
+    EXPECT_EQ(lengths, (std::vector<std::size_t>{(1 << 16) - 1, 4}));
     // A line longer than the cap, spanning many read blocks, is refused by its number.
     test_support::write_text(dir / "long", "abc\n" + std::string(300000, 'x') + "\nend\n");
     raster::InputFile long_file(dir / "long", rules());

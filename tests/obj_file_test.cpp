@@ -304,7 +304,7 @@ TEST(ObjFile, NonFiniteCoordinatesAFaceUsesAreRefusedWithTheirLine) {
 
 TEST(ObjFile, NonFiniteCoordinatesNoFaceUsesAreAWarning) {
     const Model model = parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nv nan 0 0\nf 1 2 3\n", "");
-    EXPECT_EQ(model.warnings, (std::vector<std::string>{"<memory>:4: vertex 4 is 'nan', which is not a finite number; no face uses it"}));
+    EXPECT_EQ(model.warnings, (std::vector<std::string>{"<memory>:4: vertex 4 has 'nan', which is not a finite number; no face uses it"}));
 }
 
 TEST(ObjFile, FaceCornersOfNoOBJFormAreRefusedInOurWordsWithControlBytesShown) {
@@ -321,7 +321,7 @@ TEST(ObjFile, AMissingMaterialLibraryIsOneWarning) {
     const Model model = raster::read_obj(dir / "m.obj");
     ASSERT_EQ(model.warnings.size(), 1U) << ::testing::PrintToString(model.warnings);
     EXPECT_EQ(model.warnings[0], (dir / "m.obj").string() + ":1: material library '" + (dir / "missing.mtl").string() +
-                                     "' no such file; drawing the default material");
+                                     "' does not exist; drawing the default material");
     const Model unknown = parse_obj(test_support::textured_cube_obj("lib.mtl", "absent"), "newmtl other\nKd 1 0 0\n");
     EXPECT_EQ(unknown.warnings,
               (std::vector<std::string>{"<memory>:14: material 'absent' is in none of the file's material libraries; drawing the default material"}));
@@ -336,4 +336,30 @@ TEST(ObjFile, ALineLongerThanTheCapIsRefusedWithItsNumberBeforeItIsHeld) {
     } catch (const std::runtime_error& error) {
         EXPECT_EQ(std::string(error.what()), (dir / "long.obj").string() + ":2: a line longer than 4 MiB, the most raster reads in one line");
     }
+}
+
+TEST(ObjFile, LineEndsByteOrderMarksAndBareKeywordsAreReadAsTinyobjloaderReadsThem) {
+    const test_support::ScratchDir dir;
+    // Old Mac line ends: a lone "\r" ends each line, so the nan is seen and refused.
+    test_support::write_text(dir / "mac.obj", "v 0 0 nan\rv 1 0 0\rv 0 1 0\rf 1 2 3\r");
+    EXPECT_THROW((void)raster::read_obj(dir / "mac.obj"), std::runtime_error);
+    // A byte order mark before the first vertex: it is still the first vertex.
+    test_support::write_text(dir / "bom.obj", "\xEF\xBB\xBFv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    EXPECT_EQ(raster::triangle_count(raster::read_obj(dir / "bom.obj")), 1U);
+    EXPECT_EQ(raster::triangle_count(parse_obj("\xEF\xBB\xBFv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "")), 1U);
+    // "v" alone is no vertex, so the nan is vertex 2, and the face uses it.
+    EXPECT_EQ(error_of("v 1 0 0\nv\nv 0 0 nan\nv 0 1 0\nv 0 0 1\nf 1 2 4\n"),
+              "<memory>:6: the face uses vertex 2, but line 3 gives it 'nan', which is not a finite number");
+    EXPECT_EQ(error_of("v 1 0 0\nv 0 0\nv 0 1 0\nf 1 2 3\n"), "<memory>:4: the face uses vertex 2, but line 2 gives it only 2 of its 3 coordinates");
+}
+
+TEST(ObjFile, ManyBadLinesGiveOneWarningPerCauseInLinearTime) {
+    std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    for (int i = 0; i < 100000; ++i) obj += "v nan 0 0\nmtllib \nusemtl m" + std::to_string(i) + "\n";
+    const Model model = parse_obj(obj, "");
+    EXPECT_EQ(model.warnings, (std::vector<std::string>{
+                                  "<memory>:6: mtllib names no file (nor do 99999 more mtllib lines)",
+                                  "<memory>:5: vertex 4 has 'nan', which is not a finite number; no face uses it (nor 99999 more such vertices)",
+                                  "<memory>:7: material 'm0' is used, but the file names no material library (nor 99999 more materials the faces use); "
+                                  "drawing the default material"}));
 }

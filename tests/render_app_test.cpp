@@ -96,7 +96,7 @@ TEST(RenderApp, BadModelsAndOptionsFailWithOneLine) {
         {{"ok.obj", "--ortho", "--near", "1"}, "render: --near and --far set a perspective lens; an orthographic view draws the whole model\n"},
         {{"empty.obj"}, "render: empty.obj: no faces to draw\n"},
         {{"folder.obj"}, "render: folder.obj: is a directory, not a file\n"},
-        {{"ok.obj", "--texture", "nowhere.png"}, "render: nowhere.png: no such file\n"},
+        {{"ok.obj", "--texture", "nowhere.png"}, "render: nowhere.png: does not exist\n"},
         {{"ok.obj", "--eye", "0,5,0"}, "render: the view runs along the up direction; give another --up or --eye\n"},
     };
     for (const auto& [arguments, message] : cases) {

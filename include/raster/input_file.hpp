@@ -53,7 +53,8 @@ public:
 
     [[nodiscard]] std::uintmax_t size() const noexcept { return size_; }
     [[nodiscard]] const InputRecord& record() const noexcept { return record_; }
-    // Up to buffer.size() bytes from the current position; 0 at the end of the file.
+    // Up to buffer.size() bytes from the current position; 0 at the end of the file, or at
+    // size() should the file have grown since it was opened.
     std::size_t read_some(std::span<std::uint8_t> buffer);
     // Every byte from the start, never more than size() (a file that grows is cut there).
     [[nodiscard]] std::vector<std::uint8_t> read_all();
@@ -62,13 +63,17 @@ public:
 private:
     int descriptor_ = -1;
     std::uintmax_t size_ = 0;
+    std::uintmax_t position_ = 0;
     InputRecord record_;
 };
 
-// Calls `visit` with each line of the file from the start, without its '\n', and its number
-// from 1; a line longer than `max_line_bytes` throws "NAME:LINE: a line longer than ..." before
+// Calls `visit` with each line of the file from the start, without its end ("\n", "\r\n" or a
+// lone "\r", as tinyobjloader reads them), and its number from 1; a line longer than `max_line_bytes` throws "NAME:LINE: a line longer than ..." before
 // more of it is held.
 void for_each_line(InputFile& file, const std::string& name, std::size_t max_line_bytes,
+                   const std::function<void(std::string_view line, std::size_t number)>& visit);
+// The same for text already in memory.
+void for_each_line(std::string_view text, const std::string& name, std::size_t max_line_bytes,
                    const std::function<void(std::string_view line, std::size_t number)>& visit);
 
 // Reads a whole file under the rules, appending what was read to `sources` when given.
@@ -82,7 +87,8 @@ void for_each_line(InputFile& file, const std::string& name, std::size_t max_lin
 // it is not an existing directory.
 [[nodiscard]] std::filesystem::path confinement_root(const std::filesystem::path& path);
 
-// Text for a message: control bytes as \xNN (UTF-8 kept), cut to `limit` bytes with "...".
-[[nodiscard]] std::string printable(std::string_view text, std::size_t limit = 80);
+// Text for a message: control bytes as \xNN (UTF-8 kept), cut to at most `limit` bytes of
+// whole characters with "..." (quoted file content is cut; paths are shown whole).
+[[nodiscard]] std::string printable(std::string_view text, std::size_t limit = std::string_view::npos);
 
 }  // namespace raster
