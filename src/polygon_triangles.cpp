@@ -6,6 +6,7 @@
 #include <utility>
 #include <glm/common.hpp>
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
 namespace raster::detail {
 
@@ -171,6 +172,26 @@ private:
     double flat_ = 0.0;
 };
 
+bool is_convex(const std::vector<glm::dvec2>& outline) {
+    for (std::size_t i = 0; i < outline.size(); ++i) {
+        const std::size_t next = (i + 1) % outline.size(), after = (i + 2) % outline.size();
+        if (!(orientation(outline[i], outline[next], outline[after]) > 0.0)) return false;
+    }
+    return true;
+}
+
+// A convex quad along its shorter diagonal, the usual split (and tinyobjloader's, so models of
+// quads draw as they did): for a bent quad it keeps the fold across the nearer corners. In float,
+// as the positions are stored, so that a near tie falls the same way.
+std::vector<Triangle> split_quad(std::span<const glm::dvec3> corners) {
+    const auto squared = [&](std::size_t a, std::size_t b) {
+        const glm::vec3 d = glm::vec3(corners[b]) - glm::vec3(corners[a]);
+        return d.x * d.x + d.y * d.y + d.z * d.z;
+    };
+    if (squared(0, 2) < squared(1, 3)) return {{0, 1, 2}, {0, 2, 3}};
+    return {{0, 1, 3}, {1, 2, 3}};
+}
+
 }  // namespace
 
 std::vector<Triangle> triangles_of_polygon(std::span<const glm::dvec3> corners) {
@@ -182,6 +203,7 @@ std::vector<Triangle> triangles_of_polygon(std::span<const glm::dvec3> corners) 
         for (std::uint32_t i = 1; i + 1 < corners.size(); ++i) triangles.push_back({0, i, i + 1});
         return triangles;
     }
+    if (corners.size() == 4 && is_convex(outline)) return split_quad(corners);
     EarRing ring(std::move(outline));
     // A face that touches itself can leave a status stale; re-checking costs a first pass, so a
     // budget of a few passes in all keeps garbage O(n^2).
