@@ -100,6 +100,21 @@ CLI::Option* add_integer_option(CLI::App& app, const std::string& name, int& val
         ->option_text("N [" + std::to_string(value) + "]");
 }
 
+std::string read_finite(const std::string& given, double& value) {
+    std::string_view digits = given;
+    if (digits.size() > 1 && digits[0] == '+' && digits[1] != '-') digits.remove_prefix(1);
+    const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+    const std::string quoted = "'" + raster::printable(given, 40) + "'";
+    if (digits.empty() || end != digits.data() + digits.size() || (error != std::errc() && error != std::errc::result_out_of_range)) {
+        return quoted + " is not a number";
+    }
+    if (error == std::errc::result_out_of_range) {
+        const std::string copy(digits);
+        value = std::strtod(copy.c_str(), nullptr);  // tells overflow (huge) from underflow (tiny, as good as 0)
+    }
+    return std::isfinite(value) ? "" : "must be finite, not " + quoted;
+}
+
 CLI::Validator finite_number(double low, double high, bool open_ends, const std::string& unit) {
     const auto shown = [](double value) {
         char text[32];
@@ -113,21 +128,10 @@ CLI::Validator finite_number(double low, double high, bool open_ends, const std:
         range = "must be " + std::string(open_ends ? "strictly " : "") + "between " + shown(low) + " and " + shown(high) + unit;
     }
     return {[=](std::string& given) -> std::string {
-                std::string_view digits = given;
-                if (digits.size() > 1 && digits[0] == '+' && digits[1] != '-') digits.remove_prefix(1);
                 double value = 0.0;
-                const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-                const std::string quoted = "'" + raster::printable(given, 40) + "'";
-                if (digits.empty() || end != digits.data() + digits.size() || (error != std::errc() && error != std::errc::result_out_of_range)) {
-                    return quoted + " is not a number";
-                }
-                if (error == std::errc::result_out_of_range) {
-                    const std::string copy(digits);
-                    value = std::strtod(copy.c_str(), nullptr);  // tells overflow (huge) from underflow (tiny, as good as 0)
-                }
-                if (!std::isfinite(value)) return "must be finite, not " + quoted;
+                if (std::string problem = read_finite(given, value); !problem.empty()) return problem;
                 const bool inside = open_ends ? value > low && value < high : value >= low && value <= high;
-                return inside ? std::string() : range + ", not " + quoted;
+                return inside ? std::string() : range + ", not '" + raster::printable(given, 40) + "'";
             },
             "", ""};
 }

@@ -45,6 +45,8 @@ void add_export_options(CLI::App& app, ExportOptions& options);
 // A decimal integer in [low, high]; anything else is a usage error that says so.
 CLI::Option* add_integer_option(CLI::App& app, const std::string& name, int& value, int low, int high,
                                 const std::string& help);
+// Reads a decimal number into `value`: "" when it is finite, else why not, in the option's terms.
+std::string read_finite(const std::string& given, double& value);
 // A decimal number that is finite and within [low, high] (both ends open when `open_ends`); the
 // error says in the option's terms what is wrong ("must be finite", "must be positive").
 CLI::Validator finite_number(double low, double high, bool open_ends = false, const std::string& unit = "");

@@ -16,13 +16,34 @@
 
 namespace {
 
-// --eye 1,2,3 and the like: three numbers separated by commas.
+// --eye 1,2,3 and the like: one word of three numbers separated by commas, so that the option
+// takes exactly one argument wherever it stands and "-3,-3,-3" is a value, not an option.
+std::string point_problem(const std::string& text, glm::dvec3& point) {
+    std::size_t start = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+        const std::size_t comma = text.find(',', start);
+        if ((axis < 2) != (comma != std::string::npos)) return "'" + raster::printable(text, 40) + "' is not three numbers like 1,-2,3.5";
+        if (std::string problem = read_finite(text.substr(start, comma - start), point[axis]); !problem.empty()) return problem;
+        start = comma + 1;
+    }
+    return "";
+}
+
 void add_point_option(CLI::App& app, const std::string& name, std::optional<glm::dvec3>& point, const std::string& help) {
-    app.add_option_function<std::vector<double>>(
-           name, [&point](const std::vector<double>& xyz) { point = glm::dvec3(xyz[0], xyz[1], xyz[2]); }, help)
-        ->expected(3)
-        ->delimiter(',')
-        ->check(finite_number(-HUGE_VAL, HUGE_VAL))
+    app.add_option_function<std::string>(
+           name,
+           [&point](const std::string& text) {
+               glm::dvec3 parsed(0.0);
+               (void)point_problem(text, parsed);  // the check below has passed it
+               point = parsed;
+           },
+           help)
+        ->check(CLI::Validator(
+            [](std::string& text) {
+                glm::dvec3 parsed(0.0);
+                return point_problem(text, parsed);
+            },
+            ""))
         ->option_text("X,Y,Z");
 }
 
@@ -90,6 +111,11 @@ int main(int argc, char** argv) {
                                              "Light per facet, per vertex or per pixel; unlit writes the material or texture colour "
                                              "with no light, for exact comparisons with other renderers",
                                              "phong");
+    add_choice_option<raster::Culling>(app, "--cull", view.cull,
+                                       {{"auto", raster::Culling::automatic}, {"back", raster::Culling::back}, {"none", raster::Culling::none}},
+                                       "Which faces to draw: auto culls back faces only of a closed model and draws an open one (a plane, a "
+                                       "leaf, a scan) from both sides; back always culls them; none draws both sides of everything",
+                                       "auto");
     std::optional<glm::dvec3> light;
     add_point_option(app, "--light", light, "Direction toward the key light. Default: over the viewer's left shoulder; a dim fill comes from the other side");
     std::string background;

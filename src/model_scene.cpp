@@ -59,8 +59,11 @@ ModelStage::ModelStage(std::shared_ptr<const Model> model, const ModelView& view
     // Positions moved into the unit sphere in double, so a model far from the origin keeps its detail.
     const auto unit_from_world = [&](glm::dvec3 p) { return (p - centre) / radius; };
     const auto unit_from_file = [&](glm::dvec3 p) { return unit_from_world(mirrored(p)); };
-    for (const ModelPart& part : model_->parts) {
-        auto mesh = std::make_shared<Mesh>(part.mesh);
+    const std::vector<bool> open = open_parts(*model_);
+    for (std::size_t i = 0; i < model_->parts.size(); ++i) {
+        const ModelPart& part = model_->parts[i];
+        const bool both = view.cull == Culling::none || (view.cull == Culling::automatic && open[i]);
+        auto mesh = std::make_shared<Mesh>(both ? both_sides(part.mesh) : part.mesh);
         for (glm::vec3& p : mesh->positions) p = glm::vec3(unit_from_world(glm::dvec3(p)));
         meshes_.push_back(std::move(mesh));
     }

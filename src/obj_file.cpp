@@ -3,6 +3,7 @@
 
 #include "input_stream.hpp"
 #include "model_builder.hpp"
+#include "named_path.hpp"
 #include "obj_survey.hpp"
 #include "polygon_triangles.hpp"
 
@@ -67,7 +68,7 @@ public:
 
     bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials, std::map<std::string, int>* names,
                     std::string*, std::string*) override {
-        const std::filesystem::path path = directory_ / name;
+        const std::filesystem::path path = text_ ? directory_ / name : detail::resolve_named_path(directory_, name, options_.confine);
         std::string ignored_warnings, ignored_errors;  // LoadMtl's only warning is about d and Tr, both read anyway
         if (text_) {
             std::istringstream in{std::string(*text_)};
@@ -272,7 +273,8 @@ Model model_from(std::istream& obj, const std::string& name, const detail::ObjSu
             part.sampler.wrap = m.diffuse_texopt.clamp ? TextureWrap::clamp : TextureWrap::repeat;
             const std::string material = "material '" + printable(m.name) + "'";
             if (!m.diffuse_texname.empty() && load_maps) {
-                const std::filesystem::path given = libraries.directory_of(static_cast<std::size_t>(id)) / m.diffuse_texname;
+                const std::filesystem::path given =
+                    detail::resolve_named_path(libraries.directory_of(static_cast<std::size_t>(id)), m.diffuse_texname, options.confine);
                 std::error_code error;
                 std::filesystem::path map = std::filesystem::weakly_canonical(given, error);
                 if (error) map = given;

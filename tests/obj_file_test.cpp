@@ -363,3 +363,30 @@ TEST(ObjFile, ManyBadLinesGiveOneWarningPerCauseInLinearTime) {
                                   "<memory>:7: material 'm0' is used, but the file names no material library (nor 99999 more materials the faces use); "
                                   "drawing the default material"}));
 }
+
+TEST(ObjFile, MapPathsWrittenTheWindowsWayWithQuotesOrAnotherLetterCaseAreFound) {
+    const test_support::ScratchDir dir;
+    std::filesystem::create_directories(dir / "Textures");
+    const raster::Framebuffer red = test_support::checkerboard(1, 2, {200, 0, 0}, {200, 0, 0});
+    test_support::write_png(dir / "wal67ar_small.jpg", red);  // named like the spider's; read by its content
+    test_support::write_png(dir / "my texture.png", red);
+    test_support::write_png(dir / "Textures" / "wood.png", red);
+    test_support::write_png(dir / "Dup.png", red);
+    test_support::write_png(dir / "dup.PNG", red);
+    const std::vector<std::pair<std::string, bool>> maps{
+        {".\\Wal67AR_Small.JPG", true}, {"\"my texture.png\"", true}, {"textures\\WOOD.png", true},
+        {"./Textures/wood.png", true},  {"DUP.png", false},            {"nowhere\\wood.png", false}};
+    for (const auto& [written, found] : maps) {
+        test_support::write_text(dir / "spider.mtl", "newmtl skin\nKd 1 1 1\nmap_Kd " + written + "\n");
+        test_support::write_text(dir / "spider.obj", test_support::textured_cube_obj("spider.mtl", "skin"));
+        const Model model = raster::read_obj(dir / "spider.obj");
+        ASSERT_EQ(model.parts.size(), 1U);
+        EXPECT_EQ(model.parts[0].texture != nullptr, found) << written << ": " << ::testing::PrintToString(model.warnings);
+        EXPECT_EQ(model.warnings.size(), found ? 0U : 1U) << written;
+    }
+    // An MTL named the Windows way is found too.
+    test_support::write_text(dir / "Textures" / "Spider.MTL", "newmtl skin\nKd 1 1 1\nmap_Kd ..\\my texture.png\n");
+    test_support::write_text(dir / "windows.obj", test_support::textured_cube_obj("textures/spider.mtl", "skin"));
+    const Model windows = raster::read_obj(dir / "windows.obj");
+    EXPECT_NE(windows.parts.at(0).texture, nullptr) << ::testing::PrintToString(windows.warnings);
+}

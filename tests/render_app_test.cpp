@@ -112,3 +112,38 @@ TEST(RenderApp, BadModelsAndOptionsFailWithOneLine) {
     }
     EXPECT_EQ(dir.entries(), (std::vector<std::string>{"bad.obj", "empty.obj", "folder.obj", "ok.obj"}));
 }
+
+TEST(RenderApp, EveryPointOptionWorksBeforeBetweenAndAfterThePositionalsInEitherForm) {
+    const ScratchDir dir;
+    test_support::write_crate_on_floor(dir.path());
+    const std::vector<std::pair<std::string, std::string>> points{
+        {"--eye", "-3,2.5,-4"}, {"--target", "0,-0.5,0"}, {"--up", "0,1,-0.1"}, {"--light", "-1,1,-0.5"}};
+    const std::vector<std::string> size{"--width", "24", "--height", "18", "--effort", "fast"};
+    std::vector<std::string> reference{"crate.obj", "reference.webp"};
+    for (const auto& [name, value] : points) reference.insert(reference.end(), {name, value});
+    reference.insert(reference.end(), size.begin(), size.end());
+    ASSERT_EQ(run(kRender, reference, dir.path()).exit_code, 0);
+    const Framebuffer expected = raster::read_webp(dir / "reference.webp").frames.at(0).image;
+    int case_number = 0;
+    for (const auto& [name, value] : points) {
+        for (int position = 0; position < 3; ++position) {
+            for (const bool joined : {false, true}) {
+                const std::string output = "case" + std::to_string(case_number++) + ".webp";
+                const std::vector<std::string> option = joined ? std::vector<std::string>{name + "=" + value} : std::vector<std::string>{name, value};
+                std::vector<std::string> arguments = size;
+                // The one under test before the model, between model and output, or after the output.
+                const std::vector<std::string> positionals{"crate.obj", output};
+                for (int slot = 0; slot <= 2; ++slot) {
+                    if (slot == position) arguments.insert(arguments.end(), option.begin(), option.end());
+                    if (slot < 2) arguments.push_back(positionals[static_cast<std::size_t>(slot)]);
+                }
+                for (const auto& [other, other_value] : points) {
+                    if (other != name) arguments.insert(arguments.end(), {other + "=" + other_value});
+                }
+                const auto result = run(kRender, arguments, dir.path());
+                ASSERT_EQ(result.exit_code, 0) << ::testing::PrintToString(arguments) << result.err;
+                EXPECT_EQ(raster::read_webp(dir / output).frames.at(0).image, expected) << ::testing::PrintToString(arguments);
+            }
+        }
+    }
+}

@@ -35,6 +35,14 @@ struct Model {
 
 [[nodiscard]] std::size_t triangle_count(const Model& model) noexcept;
 
+// For each part, whether it is open: some edge of it is not met as often running one way as the
+// other, over the whole model (positions compared exactly, so a closed surface may be split
+// into parts). Only a closed part's back faces may be culled unseen.
+[[nodiscard]] std::vector<bool> open_parts(const Model& model);
+// The mesh with each facet also turned to face the other way, its corners' normals flipped:
+// an open surface (a leaf, a plane, a lone triangle) drawn and lit from both sides.
+[[nodiscard]] Mesh both_sides(const Mesh& mesh);
+
 // The smallest axis-aligned box around every vertex the facets use, and the smallest sphere
 // about the box's centre that holds them all.
 struct Bounds {

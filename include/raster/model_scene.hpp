@@ -12,6 +12,10 @@
 // A model file's contents in front of a camera: what `render` draws (doc/conventions.md#models).
 namespace raster {
 
+// Which faces are drawn: a closed model's back faces never show, so `automatic` culls them only
+// then and draws an open model (a leaf, a plane, a scan) from both sides, lit on each.
+enum class Culling { automatic, back, none };
+
 // How to look at a model. Points and directions are in the model file's own coordinates
 // (right-handed, as OBJ is); what is left out is chosen from the model's bounding sphere.
 struct ModelView {
@@ -25,6 +29,7 @@ struct ModelView {
     std::optional<glm::dvec3> light;  // toward the key light; default from over the viewer's left shoulder
     ShadingMethod shading = ShadingMethod::phong;
     Rgb background{48, 52, 60};
+    Culling cull = Culling::automatic;
 };
 
 // A model placed for viewing, frame after frame.
