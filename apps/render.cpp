@@ -1,6 +1,7 @@
 #include "exporter.hpp"
 
 #include <raster/model_scene.hpp>
+#include <raster/model_file.hpp>
 #include <raster/obj_file.hpp>
 #include <raster/texture_file.hpp>
 
@@ -68,19 +69,24 @@ std::string seconds_since(std::chrono::steady_clock::time_point start) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app("Renders a Wavefront OBJ model (with its MTL materials and textures) to a lossless WebP "
-                 "still, or with --turntable to an animation that turns it once. Framed automatically; "
+    CLI::App app("Renders a model (Wavefront OBJ with its MTL materials and textures, glTF 2.0 .gltf or .glb, "
+                 "STL or PLY) to a lossless WebP still, or with --turntable to an animation that turns it "
+                 "once. Framed automatically; "
                  "points and directions are in the model's own coordinates.",
                  "render");
     app.footer("Examples:\n"
                "  render teapot.obj                        # -> teapot.webp, 800x600\n"
                "  render teapot.obj --turntable 120 spin.webp\n"
                "  render ship.obj --eye 4,2,6 --fov 30 --shading flat ship.webp\n"
-               "  render crate.obj --texture wood.png --shading unlit crate.webp");
+               "  render crate.obj --texture wood.png --shading unlit crate.webp\n"
+               "  render engine.glb --up 0,0,1 engine.webp   # a Z-up model\n"
+               "  render part.stl --eye=-3,2,4 part.webp");
     std::string model_path;
-    app.add_option("model", model_path, "The OBJ file; its MTL files are looked for beside it, their textures relative to them")
+    app.add_option("model", model_path,
+                   "The model: .obj (its MTL files are looked for beside it, their textures relative to them), "
+                   ".gltf (its buffers and images beside it), .glb, .stl or .ply")
         ->required()
-        ->option_text("MODEL.obj");
+        ->option_text("MODEL");
     ExportOptions options{"MODEL.webp, in the working directory"};
     add_export_options(app, options);
     raster::ModelView view;
@@ -150,7 +156,7 @@ int main(int argc, char** argv) {
         view.light = light;
         if (!background.empty()) view.background = colour_from_hex(background);
         if (!confine.empty()) obj.confine = raster::confinement_root(confine);
-        raster::Model model = raster::read_obj(model_path, obj);
+        raster::Model model = raster::read_model(model_path, obj);
         options.inputs = model.sources;
         if (!texture_path.empty()) {
             const auto texture = std::make_shared<const raster::Texture>(

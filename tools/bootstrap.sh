@@ -20,8 +20,8 @@ sudo when not root).
 TXT
 }
 
-app_packages=(cmake g++ make pkg-config libglm-dev libwebp-dev libstb-dev libtinyobjloader-dev libcli11-dev)
-base_packages=("${app_packages[@]}" libgtest-dev libbenchmark-dev webp)
+app_packages=(cmake g++ make pkg-config libglm-dev libwebp-dev libstb-dev libtinyobjloader-dev libassimp-dev libcli11-dev)
+base_packages=("${app_packages[@]}" libgtest-dev libbenchmark-dev webp assimp-testmodels)
 
 install_missing() {
     local missing=()

@@ -144,4 +144,76 @@ std::filesystem::path write_crate_on_floor(const std::filesystem::path& folder) 
     return folder / "crate.obj";
 }
 
+namespace {
+
+std::string base64(const std::string& bytes) {
+    static const char* const kDigits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    for (std::size_t i = 0; i < bytes.size(); i += 3) {
+        std::uint32_t group = 0;
+        for (std::size_t k = 0; k < 3; ++k) group = group << 8 | (i + k < bytes.size() ? static_cast<std::uint8_t>(bytes[i + k]) : 0U);
+        for (std::size_t k = 0; k < 4; ++k) out += k <= (bytes.size() - i) ? kDigits[(group >> (18 - 6 * k)) & 63U] : '=';
+    }
+    return out;
+}
+
+template <typename Value>
+void append_raw(std::string& bytes, Value value) {
+    bytes.append(reinterpret_cast<const char*>(&value), sizeof value);
+}
+
+// The tetrahedron's facets, counter-clockwise from outside, as STL and OBJ write them.
+const float kTetrahedron[4][3][3] = {
+    {{0, 0, 0}, {0, 1, 0}, {1, 0, 0}}, {{0, 0, 0}, {1, 0, 0}, {0, 0, 1}}, {{0, 0, 0}, {0, 0, 1}, {0, 1, 0}}, {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+
+}  // namespace
+
+std::string gltf_two_squares() {
+    std::string buffer;
+    for (const float v : {-1.0F, -1.0F, 0.0F, 1.0F, -1.0F, 0.0F, 1.0F, 1.0F, 0.0F, -1.0F, 1.0F, 0.0F}) append_raw(buffer, v);
+    for (const int i : {0, 1, 2, 0, 2, 3}) append_raw(buffer, static_cast<std::uint16_t>(i));
+    return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+  "nodes": [{"children": [1, 2], "translation": [0, 0.5, 0]},
+            {"mesh": 0, "translation": [-1.3, 0, 0]},
+            {"mesh": 0, "translation": [1.3, 0, 0], "rotation": [0, 0, 0.3826834, 0.9238795], "scale": [0.5, 0.5, 0.5]}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "material": 0}]}],
+  "materials": [{"pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.2, 0.1, 1.0], "metallicFactor": 0.0, "roughnessFactor": 0.5}}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [-1, -1, 0], "max": [1, 1, 0]},
+                {"bufferView": 1, "componentType": 5123, "count": 6, "type": "SCALAR"}],
+  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48}, {"buffer": 0, "byteOffset": 48, "byteLength": 12}],
+  "buffers": [{"byteLength": 60, "uri": "data:application/octet-stream;base64,)" +
+           base64(buffer) + "\"}]}\n";
+}
+
+std::string stl_tetrahedron_ascii() {
+    std::string stl = "solid tetrahedron\n";
+    for (const auto& facet : kTetrahedron) {
+        stl += "  facet normal 0 0 0\n    outer loop\n";
+        for (const auto& p : facet) stl += "      vertex " + std::to_string(p[0]) + " " + std::to_string(p[1]) + " " + std::to_string(p[2]) + "\n";
+        stl += "    endloop\n  endfacet\n";
+    }
+    return stl + "endsolid tetrahedron\n";
+}
+
+std::string stl_tetrahedron_binary() {
+    std::string stl(80, ' ');
+    append_raw(stl, std::uint32_t{4});
+    for (const auto& facet : kTetrahedron) {
+        for (int k = 0; k < 3; ++k) append_raw(stl, 0.0F);  // no normal: made from the corners
+        for (const auto& p : facet) {
+            for (const float v : p) append_raw(stl, v);
+        }
+        append_raw(stl, std::uint16_t{0});
+    }
+    return stl;
+}
+
+std::string ply_pyramid() {
+    return "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\nproperty float z\n"
+           "property uchar red\nproperty uchar green\nproperty uchar blue\nelement face 5\nproperty list uchar int vertex_indices\n"
+           "end_header\n"
+           "-1 0 -1 255 0 0\n1 0 -1 0 255 0\n1 0 1 0 0 255\n-1 0 1 255 255 0\n0 1.5 0 255 255 255\n"
+           "3 0 4 1\n3 1 4 2\n3 2 4 3\n3 3 4 0\n4 0 1 2 3\n";
+}
+
 }  // namespace test_support

@@ -28,4 +28,14 @@ std::string textured_cube_obj(const std::string& mtllib, const std::string& mate
 // (material "floor", Kd only); returns the OBJ's path.
 std::filesystem::path write_crate_on_floor(const std::filesystem::path& folder);
 
+// A glTF 2.0 file with its buffer embedded (base64): one square mesh drawn by two nodes under a
+// parent, the second turned 45 degrees about z, halved and moved right; base colour
+// (0.8, 0.2, 0.1), metallic 0, roughness 0.5.
+std::string gltf_two_squares();
+// A tetrahedron with one corner at the origin, as ASCII and as binary STL (the same facets).
+std::string stl_tetrahedron_ascii();
+std::string stl_tetrahedron_binary();
+// A square pyramid in ASCII PLY: four triangles and a quad base, with per-vertex colours.
+std::string ply_pyramid();
+
 }  // namespace test_support

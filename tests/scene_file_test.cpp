@@ -1,0 +1,117 @@
+// glTF 2.0, STL and PLY through the Open Asset Import Library: files the tests write, and the real
+// and broken files of Debian's assimp-testmodels.
+#include <raster/model_file.hpp>
+#include <raster/model_scene.hpp>
+
+#include "support/golden.hpp"
+#include "support/model_files.hpp"
+#include "support/scratch.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+using raster::Framebuffer;
+using raster::Model;
+using test_support::kRender;
+using test_support::run;
+using test_support::ScratchDir;
+
+namespace {
+
+const std::filesystem::path kTestModels = "/usr/share/assimp/models";
+
+Framebuffer drawn(const Model& model, raster::ModelView view = {}) {
+    Framebuffer image(160, 120);
+    raster::DepthBuffer depth;
+    raster::ModelStage(std::make_shared<const Model>(model), view, image.width(), image.height()).render(image, depth);
+    return image;
+}
+
+std::string refusal(const std::filesystem::path& path) {
+    try {
+        (void)raster::read_model(path);
+    } catch (const std::runtime_error& error) {
+        return error.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST(SceneFile, GltfNodesPlaceTheirMeshesThroughTheWholeHierarchy) {
+    const ScratchDir dir;
+    test_support::write_text(dir / "squares.gltf", test_support::gltf_two_squares());
+    const Model model = raster::read_model(dir / "squares.gltf");
+    ASSERT_EQ(model.parts.size(), 1U);
+    EXPECT_EQ(raster::triangle_count(model), 4U);
+    // The second square: turned 45 degrees, halved, 1.3 right and (from the parent) 0.5 up.
+    const raster::Bounds bounds = raster::bounds_of(model);
+    EXPECT_NEAR(bounds.high.x, 1.3 + 0.5 * std::sqrt(2.0), 1e-5);
+    EXPECT_NEAR(bounds.low.x, -2.3, 1e-5);
+    EXPECT_NEAR(bounds.high.y, 1.5, 1e-5);
+    // Base colour (linear) as the diffuse colour; roughness 0.5 gives a highlight.
+    EXPECT_NEAR(model.parts[0].material.diffuse.r, 0.8F, 1e-6F);
+    EXPECT_NEAR(model.parts[0].material.diffuse.g, 0.2F, 1e-6F);
+    EXPECT_TRUE(model.parts[0].material.shininess.has_value());
+    raster::ModelView front;
+    front.eye = glm::dvec3(0.0, 0.5, 6.0);
+    EXPECT_TRUE(test_support::matches_snapshot(drawn(model, front), "models/format-gltf"));
+}
+
+TEST(SceneFile, StlInAsciiAndBinaryAndPlyWithAQuadFaceDraw) {
+    const ScratchDir dir;
+    test_support::write_text(dir / "ascii.stl", test_support::stl_tetrahedron_ascii());
+    test_support::write_text(dir / "binary.STL", test_support::stl_tetrahedron_binary());
+    test_support::write_text(dir / "pyramid.ply", test_support::ply_pyramid());
+    const Model ascii = raster::read_model(dir / "ascii.stl");
+    EXPECT_EQ(raster::triangle_count(ascii), 4U);
+    EXPECT_EQ(raster::open_parts(ascii), (std::vector<bool>{false}));  // closed: culled as before
+    const Framebuffer tetrahedron = drawn(ascii);
+    EXPECT_EQ(drawn(raster::read_model(dir / "binary.STL")), tetrahedron);
+    EXPECT_TRUE(test_support::matches_snapshot(tetrahedron, "models/format-stl"));
+    const Model pyramid = raster::read_model(dir / "pyramid.ply");
+    EXPECT_EQ(raster::triangle_count(pyramid), 6U);  // the quad base in two
+    EXPECT_TRUE(test_support::matches_snapshot(drawn(pyramid), "models/format-ply"));
+}
+
+TEST(SceneFile, EveryFileItOpensIsAnInputNoOutputMayReplace) {
+    if (!std::filesystem::exists(kTestModels / "glTF2/BoxTextured-glTF/BoxTextured.gltf")) GTEST_SKIP() << "assimp-testmodels is not installed";
+    const ScratchDir dir;
+    for (const char* name : {"BoxTextured.gltf", "BoxTextured0.bin", "CesiumLogoFlat.png"}) {
+        std::filesystem::copy_file(kTestModels / "glTF2/BoxTextured-glTF" / name, dir / name);
+    }
+    const Model model = raster::read_model(dir / "BoxTextured.gltf");
+    ASSERT_EQ(model.parts.size(), 1U);
+    EXPECT_NE(model.parts[0].texture, nullptr);
+    for (const char* output : {"BoxTextured0.bin", "CesiumLogoFlat.png"}) {
+        const auto result = run(kRender, {"BoxTextured.gltf", output}, dir.path());
+        EXPECT_EQ(result.exit_code, 1) << output;
+        EXPECT_NE(result.err.find("this run reads; choose another output name"), std::string::npos) << result.err;
+    }
+}
+
+TEST(SceneFile, AssimpsTestModelsDrawAndItsBrokenOnesAreOneLine) {
+    if (!std::filesystem::exists(kTestModels / "glTF2")) GTEST_SKIP() << "assimp-testmodels is not installed";
+    for (const char* good : {"glTF2/BoxTextured-glTF/BoxTextured.gltf", "glTF2/BoxTextured-glTF-Binary/BoxTextured.glb",
+                             "glTF2/BoxTextured-glTF-Embedded/BoxTextured.gltf", "glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb",
+                             "STL/Spider_ascii.stl", "STL/Spider_binary.stl", "STL/Wuson.stl", "PLY/Wuson.ply", "PLY/cube_binary.ply",
+                             "PLY/float-color.ply"}) {
+        EXPECT_EQ(refusal(kTestModels / good), "") << good;
+    }
+    const Framebuffer box = drawn(raster::read_model(kTestModels / "glTF2/BoxTextured-glTF/BoxTextured.gltf"));
+    EXPECT_EQ(drawn(raster::read_model(kTestModels / "glTF2/BoxTextured-glTF-Binary/BoxTextured.glb")), box);
+    EXPECT_EQ(drawn(raster::read_model(kTestModels / "glTF2/BoxTextured-glTF-Embedded/BoxTextured.gltf")), box);
+    for (const char* bad : {"glTF2/MissingBin/BoxTextured.gltf", "glTF2/BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb",
+                            "glTF2/RecursiveNodes/RecursiveNodes.gltf", "glTF2/wrongTypes/badNumber.gltf", "glTF2/wrongTypes/badArray.gltf",
+                            "glTF2/IndexOutOfRange/AllIndicesOutOfRange.gltf", "glTF2/TestNoRootNode/NoScene.gltf", "invalid/empty.ply",
+                            "invalid/empty.x"}) {
+        const std::string message = refusal(kTestModels / bad);
+        EXPECT_EQ(message.rfind((kTestModels / bad).string() + ": ", 0), 0U) << bad << ": " << message;
+        EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    }
+    EXPECT_EQ(refusal(kTestModels / "glTF2/MissingBin/BoxTextured.gltf"),
+              (kTestModels / "glTF2/MissingBin/BoxTextured.gltf").string() + ": '" + (kTestModels / "glTF2/MissingBin/BoxTextured0.bin").string() +
+                  "' does not exist");
+}
