@@ -227,28 +227,17 @@ private:
     std::map<std::string, std::shared_ptr<const Texture>> loaded_;
 };
 
-}  // namespace
-
-Model read_scene_file(const std::filesystem::path& path, const ObjOptions& options) {
-    const std::string name = printable(path.string());
-    Model model;
-    Assimp::Importer importer;
-    auto* files = new BoundedFiles(options, model.sources);  // the importer owns it
-    importer.SetIOHandler(files);
-    // Our own checks follow; assimp's validation refuses indices out of range and broken arrays.
-    const aiScene* scene = importer.ReadFile(path.string(), aiProcess_ValidateDataStructure);
-    if (scene == nullptr || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0) {
-        const std::string& why = files->first_failure();
-        throw std::runtime_error(name + ": " + (why.empty() ? "not a glTF 2.0, STL or PLY model raster can read (or one it finds broken)" : why));
-    }
+// The model of a scene assimp read; `path` places the files it names and `name` is for messages.
+void model_from_scene(const aiScene& scene, const std::filesystem::path& path, const std::string& name, const ObjOptions& options,
+                      Model& model) {
     try {
-        SceneReader reader(*scene, path, options, model);
+        SceneReader reader(scene, path, options, model);
         detail::PolygonSoup soup = reader.soup();
         const auto materials = reader.materials();
         for (auto& [id, mesh] : detail::meshes_by_material(soup, options.crease_degrees)) {
             ModelPart part{"", std::move(mesh), default_model_material()};
             if (id >= 0 && static_cast<std::size_t>(id) < materials.size()) {
-                const aiString material_name = scene->mMaterials[id]->GetName();
+                const aiString material_name = scene.mMaterials[id]->GetName();
                 part.material_name = material_name.C_Str();
                 part.material = materials[static_cast<std::size_t>(id)].first;
                 if (!part.mesh.uvs.empty()) part.texture = materials[static_cast<std::size_t>(id)].second;
@@ -259,6 +248,41 @@ Model read_scene_file(const std::filesystem::path& path, const ObjOptions& optio
         throw std::runtime_error(name + ": " + problem.what());
     }
     if (model.parts.empty()) throw std::runtime_error(name + ": no faces to draw");
+}
+
+bool readable(const aiScene* scene) { return scene != nullptr && (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) == 0; }
+
+constexpr const char* kUnreadable = "not a glTF 2.0, STL or PLY model raster can read (or one it finds broken)";
+
+}  // namespace
+
+Model read_scene_file(const std::filesystem::path& path, const ObjOptions& options) {
+    const std::string name = printable(path.string());
+    Model model;
+    Assimp::Importer importer;
+    auto* files = new BoundedFiles(options, model.sources);  // the importer owns it
+    importer.SetIOHandler(files);
+    // Our own checks follow; assimp's validation refuses indices out of range and broken arrays.
+    const aiScene* scene = importer.ReadFile(path.string(), aiProcess_ValidateDataStructure);
+    if (!readable(scene)) {
+        const std::string& why = files->first_failure();
+        throw std::runtime_error(name + ": " + (why.empty() ? kUnreadable : why));
+    }
+    model_from_scene(*scene, path, name, options, model);
+    return model;
+}
+
+Model parse_scene_file(std::span<const std::uint8_t> bytes, const std::string& format, const ObjOptions& options) {
+    const std::string name = "<memory>";
+    Model model;
+    ObjOptions no_files = options;
+    no_files.load_textures = false;
+    no_files.confine = "/nonexistent-raster-memory-only";  // a buffer or image the text names is never opened
+    Assimp::Importer importer;
+    importer.SetIOHandler(new BoundedFiles(no_files, model.sources));
+    const aiScene* scene = importer.ReadFileFromMemory(bytes.data(), bytes.size(), aiProcess_ValidateDataStructure, format.c_str());
+    if (!readable(scene)) throw std::runtime_error(name + ": " + kUnreadable);
+    model_from_scene(*scene, "", name, no_files, model);
     return model;
 }
 

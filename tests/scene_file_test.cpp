@@ -69,6 +69,9 @@ TEST(SceneFile, StlInAsciiAndBinaryAndPlyWithAQuadFaceDraw) {
     EXPECT_EQ(raster::triangle_count(ascii), 4U);
     EXPECT_EQ(raster::open_parts(ascii), (std::vector<bool>{false}));  // closed: culled as before
     const Framebuffer tetrahedron = drawn(ascii);
+    const std::string text = test_support::stl_tetrahedron_ascii();
+    const Model in_memory = raster::parse_scene_file(std::vector<std::uint8_t>(text.begin(), text.end()), "stl");
+    EXPECT_EQ(drawn(in_memory), tetrahedron);
     EXPECT_EQ(drawn(raster::read_model(dir / "binary.STL")), tetrahedron);
     EXPECT_TRUE(test_support::matches_snapshot(tetrahedron, "models/format-stl"));
     const Model pyramid = raster::read_model(dir / "pyramid.ply");
