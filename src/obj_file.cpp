@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <unordered_set>
 #include <optional>
@@ -310,6 +311,17 @@ Model model_from(std::istream& obj, const std::string& name, const detail::ObjSu
         if (seen.insert(warning).second) distinct.push_back(std::move(warning));
     }
     model.warnings = std::move(distinct);
+    if (model.parts.empty() && !soup.triangles.empty()) {
+        float farthest = 0.0F;
+        for (const glm::vec3& p : soup.positions) farthest = std::max({farthest, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+        // 32-bit floats keep about 7 digits: far from the origin, a small face collapses to a line.
+        char hint[160] = "";
+        if (farthest >= 65536.0F) {
+            std::snprintf(hint, sizeof hint, " (stored as 32-bit floats, coordinates near %.0e step by %g: move the model nearer the origin)",
+                          static_cast<double>(farthest), static_cast<double>(std::nextafter(farthest, HUGE_VALF) - farthest));
+        }
+        throw BadModel(std::string("every face has no area") + hint);
+    }
     if (model.parts.empty()) throw BadModel("no faces to draw");
     return model;
 }

@@ -104,7 +104,7 @@ TEST(ObjFile, BadIndicesAndPointsAreOneLineErrors) {
               "<memory>:4: the face uses vertex 3, but line 3 gives it '-1e39', which is beyond the largest coordinate raster stores");
     EXPECT_EQ(error_of(""), "<memory>: no faces to draw");
     EXPECT_EQ(error_of(triangle), "<memory>: no faces to draw");
-    EXPECT_EQ(error_of("v 0 0 0\nv 0 0 0\nv 0 0 0\nf 1 2 3\n"), "<memory>: no faces to draw");  // no area
+    EXPECT_EQ(error_of("v 0 0 0\nv 0 0 0\nv 0 0 0\nf 1 2 3\n"), "<memory>: every face has no area");
 }
 
 TEST(ObjFile, HugeAndTinyModelsKeepTheirFaces) {
