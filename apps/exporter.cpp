@@ -1,5 +1,6 @@
 #include "exporter.hpp"
 
+#include <raster/png.hpp>
 #include <raster/version.hpp>
 
 #include <algorithm>
@@ -11,6 +12,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <filesystem>
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
@@ -58,7 +60,18 @@ public:
 
 bool is_terminal(int descriptor) { return ::isatty(descriptor) == 1; }
 
+std::string lowered_extension(const std::string& name) {
+    std::string extension = std::filesystem::path(name).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return extension;
+}
+
 }  // namespace
+
+ImageFormat ExportOptions::image_format() const {
+    if (format) return *format;
+    return lowered_extension(output) == ".png" ? ImageFormat::png : ImageFormat::webp;
+}
 
 int ExportOptions::threads_in_use() const {
     cpu_set_t allowed;
@@ -157,6 +170,11 @@ void add_output_options(CLI::App& app, ExportOptions& options) {
     auto* positional = app.add_option("output", options.output, output_help)->option_text("FILE");
     auto* named = app.add_option("-o,--output", options.output, "The same, as an option")->option_text("FILE");
     positional->excludes(named);
+    add_choice_option<std::optional<ImageFormat>>(app, "--format", options.format,
+                                                  {{"webp", ImageFormat::webp}, {"png", ImageFormat::png}},
+                                                  "File format: lossless WebP, or PNG (8-bit, for tools that want it). "
+                                                  "Default: png for a name ending in .png, else webp",
+                                                  "by name");
     add_choice_option<raster::Effort>(
         app, "--effort", options.effort,
         {{"fast", raster::Effort::fast}, {"default", raster::Effort::balanced}, {"max", raster::Effort::max}},
@@ -241,12 +259,10 @@ void check_output(const CLI::App& app, const ExportOptions& options) {
         return;
     }
     raster::check_output_path(options.output, options.policy, options.inputs);
-    const std::string extension = std::filesystem::path(options.output).extension().string();
-    std::string lowered = extension;
-    std::transform(lowered.begin(), lowered.end(), lowered.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (lowered != ".webp" && !options.quiet) {
-        std::cerr << app.get_name() << ": warning: '" << options.output
-                  << "' does not end in .webp, but it will hold WebP data\n";
+    const bool png = options.image_format() == ImageFormat::png;
+    if (lowered_extension(options.output) != (png ? ".png" : ".webp") && !options.quiet) {
+        std::cerr << app.get_name() << ": warning: '" << raster::printable(options.output) << "' does not end in "
+                  << (png ? ".png, but it will hold PNG data\n" : ".webp, but it will hold WebP data\n");
     }
 }
 
@@ -285,6 +301,9 @@ int run_exporter(CLI::App& app, const ExportOptions& options, int argc, char** a
         std::ostream& out = options.output == "-" ? std::cerr : std::cout;
         if (!options.quiet && !(out << report << '\n' << std::flush)) return 1;  // e.g. a closed stdout
         return 0;
+    } catch (const CLI::ParseError& error) {  // options that clash in a way only the run can see
+        std::cerr << app.get_name() << ": " << error.what() << " (see --help)\n";
+        return 2;
     } catch (const std::exception& error) {
         std::cerr << app.get_name() << ": " << error.what() << '\n';
         return 1;
@@ -299,18 +318,23 @@ std::string describe_destination(const ExportOptions& options) {
 
 }  // namespace
 
-std::string export_still(const CLI::App& app, const ExportOptions& options,
-                         const std::function<void(raster::Framebuffer&)>& render) {
+std::string export_still(const CLI::App& app, const ExportOptions& options, const RenderStill& render) {
     check_output(app, options);
     Progress progress(app.get_name(), options);
     progress.stage("rendering");
     raster::Framebuffer frame(options.width, options.height);
-    render(frame);
+    std::vector<std::uint8_t> alpha;
+    render(frame, alpha);
     progress.stage("encoding");
-    const std::vector<std::uint8_t> bytes = raster::encode_webp_still(frame, options.effort);
+    const std::vector<std::uint8_t> bytes = options.image_format() == ImageFormat::png ? raster::encode_png(frame, alpha)
+                                                                                      : raster::encode_webp_still(frame, options.effort, alpha);
     deliver(options, bytes);
-    return describe_destination(options) + ": " + std::to_string(options.width) + "x" +
-           std::to_string(options.height) + " still, " + std::to_string(bytes.size()) + " bytes";
+    return describe_destination(options) + ": " + std::to_string(options.width) + "x" + std::to_string(options.height) +
+           (alpha.empty() ? " still, " : " still on a transparent background, ") + std::to_string(bytes.size()) + " bytes";
+}
+
+std::string export_still(const CLI::App& app, const ExportOptions& options, const std::function<void(raster::Framebuffer&)>& render) {
+    return export_still(app, options, [&](raster::Framebuffer& frame, std::vector<std::uint8_t>&) { render(frame); });
 }
 
 void add_animation_options(CLI::App& app, int& fps, ExportOptions& options) {
@@ -325,18 +349,72 @@ void add_animation_options(CLI::App& app, int& fps, ExportOptions& options) {
         "parallel: each frame's changed rectangle encoded on every core while later frames render; anim: libwebp's "
         "own animation encoder, on one thread (doc/performance.md compares them)",
         "parallel");
+    auto* frames_dir = app.add_option("--frames-dir", options.frames_dir,
+                                      "Write the frames as numbered PNG files (0000.png, 0001.png, ...) into DIR, made if "
+                                      "missing, instead of one animation: for video, e.g. ffmpeg -framerate 30 -i DIR/%04d.png "
+                                      "out.mp4")
+                           ->option_text("DIR");
+    for (const char* output : {"output", "--output"}) {
+        if (CLI::Option* named = app.get_option_no_throw(output)) frames_dir->excludes(named);
+    }
 }
 
-std::string export_animation(const CLI::App& app, const ExportOptions& options, int frames, int fps,
-                             const std::function<void(raster::Framebuffer&, int)>& render) {
-    check_output(app, options);
-    const int spacing_ms = (1000 + fps / 2) / fps;
-    raster::AnimationEncoder encoder(options.width, options.height, spacing_ms, {options.effort, options.encoder, options.threads_in_use()});
+namespace {
+
+// Frame i's file: at least four digits, as many as the last frame's number needs.
+std::filesystem::path frame_file(const std::filesystem::path& dir, int index, int frames) {
+    const int digits = std::max(4, static_cast<int>(std::to_string(std::max(frames - 1, 0)).size()));
+    std::string number = std::to_string(index);
+    number.insert(0, static_cast<std::size_t>(std::max(0, digits - static_cast<int>(number.size()))), '0');
+    return dir / (number + ".png");
+}
+
+std::string export_frames(const CLI::App& app, const ExportOptions& options, int frames, int fps, const RenderFrame& render) {
+    const std::filesystem::path dir = options.frames_dir;
+    std::error_code error;
+    std::filesystem::create_directories(dir, error);
+    if (error || !std::filesystem::is_directory(dir)) {
+        throw std::runtime_error("cannot make the frames directory '" + raster::printable(dir.string()) + "'" +
+                                 (error ? ": " + error.message() : ": a file of that name is in the way"));
+    }
+    for (int i = 0; i < frames; ++i) raster::check_output_path(frame_file(dir, i, frames), options.policy, options.inputs);
     raster::Framebuffer frame(options.width, options.height);
     Progress progress(app.get_name(), options);
+    std::uintmax_t total = 0;
+    std::vector<std::uint8_t> alpha;
     for (int i = 0; i < frames; ++i) {
-        render(frame, i);
-        encoder.add_frame(frame);
+        alpha.clear();
+        render(frame, i, alpha);
+        const std::vector<std::uint8_t> bytes = raster::encode_png(frame, alpha);
+        raster::write_output_file(frame_file(dir, i, frames), bytes, options.policy, options.inputs);
+        total += bytes.size();
+        progress.frame(i + 1, frames);
+    }
+    return "Wrote " + raster::printable(frame_file(dir, 0, frames).string()) + " to " +
+           frame_file(dir, frames - 1, frames).filename().string() + ": " + std::to_string(frames) + " PNG frames of " +
+           std::to_string(options.width) + "x" + std::to_string(options.height) + " for " + std::to_string(fps) + " fps, " +
+           std::to_string(total) + " bytes";
+}
+
+}  // namespace
+
+std::string export_animation(const CLI::App& app, const ExportOptions& options, int frames, int fps, const RenderFrame& render) {
+    if (!options.frames_dir.empty()) return export_frames(app, options, frames, fps, render);
+    if (options.image_format() == ImageFormat::png) {
+        throw std::runtime_error("a PNG file holds one picture: write the animation to a .webp file, or to numbered PNG "
+                                 "frames with --frames-dir DIR");
+    }
+    check_output(app, options);
+    const int spacing_ms = (1000 + fps / 2) / fps;
+    const raster::AnimationPath path = options.transparent ? raster::AnimationPath::anim : options.encoder;
+    raster::AnimationEncoder encoder(options.width, options.height, spacing_ms, {options.effort, path, options.threads_in_use()});
+    raster::Framebuffer frame(options.width, options.height);
+    std::vector<std::uint8_t> alpha;
+    Progress progress(app.get_name(), options);
+    for (int i = 0; i < frames; ++i) {
+        alpha.clear();
+        render(frame, i, alpha);
+        encoder.add_frame(frame, alpha);
         progress.frame(i + 1, frames);
     }
     progress.stage("assembling the animation");
@@ -345,4 +423,10 @@ std::string export_animation(const CLI::App& app, const ExportOptions& options, 
     return describe_destination(options) + ": " + std::to_string(options.width) + "x" +
            std::to_string(options.height) + ", " + std::to_string(frames) + " frames, " +
            std::to_string(std::int64_t{frames} * spacing_ms) + " ms, " + std::to_string(bytes.size()) + " bytes";
+}
+
+std::string export_animation(const CLI::App& app, const ExportOptions& options, int frames, int fps,
+                             const std::function<void(raster::Framebuffer&, int)>& render) {
+    return export_animation(app, options, frames, fps,
+                            [&](raster::Framebuffer& frame, int index, std::vector<std::uint8_t>&) { render(frame, index); });
 }

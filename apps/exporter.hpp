@@ -14,6 +14,9 @@
 #include <utility>
 #include <vector>
 
+// The file formats written: lossless WebP (the default), or PNG for tools that want it.
+enum class ImageFormat { webp, png };
+
 // What every exporter takes: where to write, how big, how hard to compress, what to say.
 struct ExportOptions {
     explicit ExportOptions(std::string default_output) : output(std::move(default_output)) {}
@@ -28,6 +31,11 @@ struct ExportOptions {
     raster::AnimationPath encoder = raster::AnimationPath::parallel;
     int threads = 0;  // for rendering bands and encoding frames; 0: one per core
     std::vector<raster::InputRecord> inputs;  // every file read: no output may replace one
+    std::optional<ImageFormat> format;  // default: PNG for a name ending in .png, else WebP
+    std::string frames_dir;  // an animation written as numbered PNG frames into this directory
+    bool transparent = false;  // frames come with alpha: animations take the anim path, which keeps it
+
+    [[nodiscard]] ImageFormat image_format() const;
 
     // More threads than the cores this process may run on would only hold memory: the count
     // asked for is capped there, and 0 takes one per such core.
@@ -38,7 +46,7 @@ struct ExportOptions {
 // A CLI11 app whose help is wrapped to 80 columns and whose --version names the program.
 void configure_app(CLI::App& app);
 
-// OUTPUT / -o, --effort, --quiet, --progress, --follow-symlinks.
+// OUTPUT / -o, --format, --effort, --quiet, --progress, --follow-symlinks.
 void add_output_options(CLI::App& app, ExportOptions& options);
 // --width and --height, then the output options.
 void add_export_options(CLI::App& app, ExportOptions& options);
@@ -92,7 +100,7 @@ private:
 };
 
 // Fails early (a bad path, an input of this run, stdout on a terminal) and warns once about a
-// name not ending in .webp.
+// name not ending in the format's extension.
 void check_output(const CLI::App& app, const ExportOptions& options);
 // Writes the finished bytes to the output file (atomically) or to standard output.
 void deliver(const ExportOptions& options, std::span<const std::uint8_t> bytes);
@@ -107,13 +115,22 @@ std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv);
 int run_exporter(CLI::App& app, const ExportOptions& options, int argc, char** argv,
                  const std::function<std::string()>& export_file);
 
-// Renders one frame of the chosen size, writes it as a still and returns the line to report:
-// "Wrote out.webp: 800x600 still, 4211 bytes".
+// Draws a frame and, for a transparent background, fills `alpha` with its coverage (one byte
+// per pixel); left empty, the frame is opaque.
+using RenderStill = std::function<void(raster::Framebuffer&, std::vector<std::uint8_t>& alpha)>;
+using RenderFrame = std::function<void(raster::Framebuffer&, int index, std::vector<std::uint8_t>& alpha)>;
+
+// Renders one frame of the chosen size, writes it as a still (WebP or PNG) and returns the line
+// to report: "Wrote out.webp: 800x600 still, 4211 bytes".
+std::string export_still(const CLI::App& app, const ExportOptions& options, const RenderStill& render);
 std::string export_still(const CLI::App& app, const ExportOptions& options,
                          const std::function<void(raster::Framebuffer&)>& render);
-// --fps 1..95, with the browsers' 10 ms rule in its help, and --encoder parallel|anim.
+// --fps 1..95, with the browsers' 10 ms rule in its help, --encoder parallel|anim and
+// --frames-dir DIR.
 void add_animation_options(CLI::App& app, int& fps, ExportOptions& options);
 // Renders `frames` frames at `fps` into a looping animation, writes it and returns the line to
-// report: "Wrote out.webp: 800x600, 360 frames, 7200 ms, 205874 bytes".
+// report: "Wrote out.webp: 800x600, 360 frames, 7200 ms, 205874 bytes". With --frames-dir the
+// frames are numbered PNG files in that directory instead.
+std::string export_animation(const CLI::App& app, const ExportOptions& options, int frames, int fps, const RenderFrame& render);
 std::string export_animation(const CLI::App& app, const ExportOptions& options, int frames, int fps,
                              const std::function<void(raster::Framebuffer&, int)>& render);

@@ -1,4 +1,5 @@
 #include "exporter.hpp"
+#include "model_batch.hpp"
 
 #include <raster/model_scene.hpp>
 #include <raster/model_file.hpp>
@@ -48,7 +49,7 @@ void add_point_option(CLI::App& app, const std::string& name, std::optional<glm:
         ->option_text("X,Y,Z");
 }
 
-// --background #RRGGBB: six hexadecimal digits, the # optional.
+// --background #RRGGBB: six hexadecimal digits, the # optional; or none.
 bool is_hex_colour(const std::string& text) {
     const std::string digits = !text.empty() && text[0] == '#' ? text.substr(1) : text;
     return digits.size() == 6 && digits.find_first_not_of("0123456789abcdefABCDEF") == std::string::npos;
@@ -59,20 +60,94 @@ raster::Rgb colour_from_hex(const std::string& text) {
     return {static_cast<std::uint8_t>(value >> 16), static_cast<std::uint8_t>(value >> 8), static_cast<std::uint8_t>(value)};
 }
 
-std::string seconds_since(std::chrono::steady_clock::time_point start) {
-    const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::string seconds_text(double seconds) {
     char text[32];
-    std::snprintf(text, sizeof text, "%.2f s", elapsed.count());
+    std::snprintf(text, sizeof text, "%.2f s", seconds);
     return text;
+}
+
+// A model read and made ready to draw, with what its reading found.
+struct LoadedModel {
+    std::shared_ptr<const raster::Model> model;
+    std::vector<raster::InputRecord> inputs;  // every file read for it, which no output may replace
+    std::vector<std::string> warnings;
+    std::size_t triangles = 0;
+    double seconds = 0.0;  // reading it took
+};
+
+// What every model of a run shares: how to read it and how to look at it.
+struct RenderPlan {
+    raster::ObjOptions obj;
+    std::shared_ptr<const raster::Texture> texture;  // --texture, read once
+    std::string texture_path;
+    std::vector<raster::InputRecord> texture_inputs;
+    raster::TextureFilter filter = raster::TextureFilter::trilinear;
+    raster::ModelView view;
+    int frames = 0;  // 0: a still
+    int fps = 30;
+};
+
+LoadedModel load_model(const std::string& path, const RenderPlan& plan) {
+    const auto start = std::chrono::steady_clock::now();
+    raster::Model model = raster::read_model(path, plan.obj);
+    LoadedModel loaded;
+    loaded.inputs = model.sources;
+    loaded.inputs.insert(loaded.inputs.end(), plan.texture_inputs.begin(), plan.texture_inputs.end());
+    loaded.warnings = model.warnings;
+    if (plan.texture) {
+        for (std::string& warning : raster::replace_diffuse_maps(model, plan.texture, plan.texture_path)) loaded.warnings.push_back(warning);
+    }
+    for (raster::ModelPart& part : model.parts) part.sampler.filter = plan.filter;
+    loaded.triangles = raster::triangle_count(model);
+    loaded.model = std::make_shared<const raster::Model>(std::move(model));
+    loaded.seconds = seconds_since(start);
+    return loaded;
+}
+
+// Draws one loaded model into `options.output` (or its frames) and returns the line to report.
+std::string render_model(const CLI::App& app, ExportOptions options, const LoadedModel& loaded, const RenderPlan& plan,
+                         raster::Renderer& renderer) {
+    const auto start = std::chrono::steady_clock::now();
+    options.inputs = loaded.inputs;
+    if (!options.quiet) {
+        for (const std::string& warning : loaded.warnings) std::cerr << app.get_name() << ": warning: " << warning << '\n';
+    }
+    const raster::ModelStage stage(loaded.model, plan.view, options.width, options.height);
+    const auto draw = [&](raster::Framebuffer& frame, double turn, std::vector<std::uint8_t>& alpha) {
+        stage.render(frame, renderer, turn);
+        if (plan.view.transparent) alpha = renderer.depth().coverage();
+    };
+    std::string report;
+    if (plan.frames == 0) {
+        report = export_still(app, options, [&](raster::Framebuffer& frame, std::vector<std::uint8_t>& alpha) { draw(frame, 0.0, alpha); });
+    } else {
+        report = export_animation(app, options, plan.frames, plan.fps, [&](raster::Framebuffer& frame, int index, std::vector<std::uint8_t>& alpha) {
+            draw(frame, 2.0 * std::numbers::pi * index / plan.frames, alpha);
+        });
+    }
+    return report + ", " + std::to_string(loaded.triangles) + " triangles, " + seconds_text(loaded.seconds + seconds_since(start));
+}
+
+bool looks_like_a_model(const std::string& name) {
+    std::string extension = std::filesystem::path(name).extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    for (const char* known : {".obj", ".gltf", ".glb", ".stl", ".ply"}) {
+        if (extension == known) return true;
+    }
+    return false;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app("Renders a model (Wavefront OBJ with its MTL materials and textures, glTF 2.0 .gltf or .glb, "
-                 "STL or PLY) to a lossless WebP still, or with --turntable to an animation that turns it "
-                 "once. Framed automatically; "
-                 "points and directions are in the model's own coordinates.",
+    CLI::App app("Renders models (Wavefront OBJ with its MTL materials and textures, glTF 2.0 .gltf or .glb, "
+                 "STL or PLY) to lossless WebP or PNG stills, or with --turntable to animations that turn them "
+                 "once. Framed automatically; points and directions are in each model's own coordinates. "
+                 "Several models at once need --output-dir.",
                  "render");
     app.footer("Examples:\n"
                "  render teapot.obj                        # -> teapot.webp, 800x600\n"
@@ -80,16 +155,29 @@ int main(int argc, char** argv) {
                "  render ship.obj --eye 4,2,6 --fov 30 --shading flat ship.webp\n"
                "  render crate.obj --texture wood.png --shading unlit crate.webp\n"
                "  render engine.glb --up 0,0,1 engine.webp   # a Z-up model\n"
-               "  render part.stl --eye=-3,2,4 part.webp");
+               "  render part.stl --eye=-3,2,4 --background none part.png\n"
+               "  render *.obj *.glb --width 256 --height 256 --output-dir thumbs\n"
+               "  render vase.ply --turntable 90 --frames-dir frames   # frames/0000.png ...");
     std::string model_path;
     app.add_option("model", model_path,
                    "The model: .obj (its MTL files are looked for beside it, their textures relative to them), "
                    ".gltf (its buffers and images beside it), .glb, .stl or .ply")
         ->required()
         ->option_text("MODEL");
-    ExportOptions options{"MODEL.webp, in the working directory"};
+    ExportOptions options{"MODEL.webp (or .png with --format png), in the working directory"};
     add_export_options(app, options);
-    raster::ModelView view;
+    std::vector<std::string> more_models;
+    app.add_option("more", more_models, "With --output-dir: more models, each drawn into DIR as its name with .webp or .png")
+        ->option_text("MODEL...");
+    std::string output_dir;
+    auto* batch = app.add_option("--output-dir", output_dir,
+                                 "Render every MODEL given into DIR (made if missing) as DIR/NAME.webp, or .png with --format png. "
+                                 "The next model is read while one is drawn; a model that fails is reported and the rest "
+                                 "are still written; the exit status is 1 if any failed")
+                      ->option_text("DIR");
+    batch->excludes(app.get_option("--output"));
+    RenderPlan plan;
+    raster::ModelView& view = plan.view;
     add_point_option(app, "--eye", view.eye, "Where the camera stands. Default: in front, to the right and above, far enough back to see the whole model");
     add_point_option(app, "--target", view.target, "The point the camera looks at. Default: the middle of the model's bounding box");
     std::optional<glm::dvec3> up;
@@ -104,11 +192,10 @@ int main(int argc, char** argv) {
     app.add_option("--far", view.far, "Distance to the far clipping plane, in model units. Default: just beyond the model")
         ->check(finite_number(0.0, HUGE_VAL, true))
         ->option_text("DISTANCE");
-    int frames = 0;
-    add_integer_option(app, "--turntable", frames, 0, 10000,
+    add_integer_option(app, "--turntable", plan.frames, 0, 10000,
                        "Write an animation of this many frames, 1..10000, turning the model once about --up");
-    int fps = 30;
-    add_animation_options(app, fps, options);
+    add_animation_options(app, plan.fps, options);
+    batch->excludes(app.get_option("--frames-dir"));
     add_choice_option<raster::ShadingMethod>(app, "--shading", view.shading,
                                              {{"flat", raster::ShadingMethod::flat},
                                               {"gouraud", raster::ShadingMethod::gouraud},
@@ -125,20 +212,21 @@ int main(int argc, char** argv) {
     std::optional<glm::dvec3> light;
     add_point_option(app, "--light", light, "Direction toward the key light. Default: over the viewer's left shoulder; a dim fill comes from the other side");
     std::string background;
-    app.add_option("--background", background, "Background colour [#30343c]")
-        ->check(CLI::Validator([](std::string& text) { return is_hex_colour(text) ? "" : "'" + text + "' is not a colour like #30343c"; }, ""))
-        ->option_text("#RRGGBB");
-    std::string texture_path;
-    app.add_option("--texture", texture_path, "Image (PNG, JPEG, TGA, BMP or WebP) to use as every material's diffuse map")
+    app.add_option("--background", background,
+                   "Background colour, or none for a transparent one (alpha in WebP and PNG, so a thumbnail sits on any page; "
+                   "a turntable then uses --encoder anim, which keeps alpha) [#30343c]")
+        ->check(CLI::Validator([](std::string& text) {
+                    return text == "none" || is_hex_colour(text) ? "" : "'" + raster::printable(text, 40) + "' is not a colour like #30343c, or none";
+                }, ""))
+        ->option_text("#RRGGBB|none");
+    app.add_option("--texture", plan.texture_path, "Image (PNG, JPEG, TGA, BMP or WebP) to use as every material's diffuse map")
         ->option_text("FILE");
-    raster::TextureFilter filter = raster::TextureFilter::trilinear;
-    add_choice_option<raster::TextureFilter>(app, "--filter", filter,
+    add_choice_option<raster::TextureFilter>(app, "--filter", plan.filter,
                                              {{"nearest", raster::TextureFilter::nearest},
                                               {"bilinear", raster::TextureFilter::bilinear},
                                               {"trilinear", raster::TextureFilter::trilinear}},
                                              "Texture filtering (doc/lab/README.md#texture-filtering has the measurements)", "trilinear");
-    raster::ObjOptions obj;
-    app.add_option("--crease", obj.crease_degrees,
+    app.add_option("--crease", plan.obj.crease_degrees,
                    "Normals the model lacks are smoothed across edges gentler than this angle and creased at sharper ones; 0 makes every facet flat [60]")
         ->check(finite_number(0.0, 180.0, false, " degrees"))
         ->option_text("DEGREES");
@@ -151,33 +239,64 @@ int main(int argc, char** argv) {
 
     return run_exporter(app, options, argc, argv, [&] {
         const auto start = std::chrono::steady_clock::now();
-        if (app.count("output") + app.count("--output") == 0) options.output = std::filesystem::path(model_path).stem().string() + ".webp";
         if (up) view.up = *up;
         view.light = light;
-        if (!background.empty()) view.background = colour_from_hex(background);
-        if (!confine.empty()) obj.confine = raster::confinement_root(confine);
-        raster::Model model = raster::read_model(model_path, obj);
-        options.inputs = model.sources;
-        if (!texture_path.empty()) {
-            const auto texture = std::make_shared<const raster::Texture>(
-                raster::read_texture(texture_path, raster::kMaxTextureTexels, obj.confine, &options.inputs));
-            for (std::string& warning : raster::replace_diffuse_maps(model, texture, texture_path)) model.warnings.push_back(warning);
+        if (background == "none") {
+            view.transparent = options.transparent = true;
+        } else if (!background.empty()) {
+            view.background = colour_from_hex(background);
         }
-        for (raster::ModelPart& part : model.parts) part.sampler.filter = filter;
-        if (!options.quiet) {
-            for (const std::string& warning : model.warnings) std::cerr << "render: warning: " << warning << '\n';
+        if (!confine.empty()) plan.obj.confine = raster::confinement_root(confine);
+        if (!options.frames_dir.empty() && plan.frames == 0) {
+            throw CLI::ValidationError("--frames-dir writes the frames of a turntable; add --turntable N");
         }
-        const std::size_t triangles = raster::triangle_count(model);
-        const raster::ModelStage stage(std::make_shared<const raster::Model>(std::move(model)), view, options.width, options.height);
+        if (!plan.texture_path.empty()) {
+            plan.texture = std::make_shared<const raster::Texture>(
+                raster::read_texture(plan.texture_path, raster::kMaxTextureTexels, plan.obj.confine, &plan.texture_inputs));
+        }
         raster::Renderer renderer(options.render_options());
-        std::string report;
-        if (frames == 0) {
-            report = export_still(app, options, [&](raster::Framebuffer& frame) { stage.render(frame, renderer, 0.0); });
-        } else {
-            report = export_animation(app, options, frames, fps, [&](raster::Framebuffer& frame, int index) {
-                stage.render(frame, renderer, 2.0 * std::numbers::pi * index / frames);
-            });
+        const std::string extension = options.image_format() == ImageFormat::png ? ".png" : ".webp";
+        if (output_dir.empty()) {
+            const bool named = app.count("output") + app.count("--output") > 0;
+            if (!more_models.empty()) {
+                throw CLI::ValidationError("several models need --output-dir DIR, for example: render a.obj b.glb --output-dir thumbs");
+            }
+            if (app.count("output") > 0 && looks_like_a_model(options.output)) {
+                throw CLI::ValidationError("'" + raster::printable(options.output) +
+                                           "' looks like a model, not a picture to write: give --output-dir DIR to render several "
+                                           "models, or -o to write that name anyway");
+            }
+            if (!named) options.output = std::filesystem::path(model_path).stem().string() + extension;
+            return render_model(app, options, load_model(model_path, plan), plan, renderer);
         }
-        return report + ", " + std::to_string(triangles) + " triangles, " + seconds_since(start);
+        std::vector<std::string> models{model_path};
+        if (app.count("output") > 0) models.push_back(options.output);
+        models.insert(models.end(), more_models.begin(), more_models.end());
+        const std::vector<BatchJob> jobs = plan_batch(models, output_dir, extension);
+        std::error_code error;
+        std::filesystem::create_directories(output_dir, error);
+        if (error || !std::filesystem::is_directory(output_dir)) {
+            throw std::runtime_error("cannot make the output directory '" + raster::printable(output_dir) + "'" +
+                                     (error ? ": " + error.message() : ": a file of that name is in the way"));
+        }
+        const std::size_t written = run_prefetched<LoadedModel>(
+            jobs, [&](const BatchJob& job) { return load_model(job.model, plan); },
+            [&](const BatchJob& job, LoadedModel& loaded) {
+                ExportOptions one = options;
+                one.output = job.output.string();
+                const std::string report = render_model(app, one, loaded, plan, renderer);
+                if (!options.quiet) std::cout << report << '\n' << std::flush;
+            },
+            [&](const BatchJob& job, const std::string& reason) {
+                const std::string model = raster::printable(job.model);
+                std::cerr << app.get_name() << ": " << (reason.starts_with(model + ":") ? "" : model + ": ") << reason << '\n';
+            });
+        const double seconds = seconds_since(start);
+        const std::string summary = std::to_string(written) + " of " + std::to_string(jobs.size()) + " models into " +
+                                    raster::printable(output_dir) + " in " + seconds_text(seconds);
+        if (written < jobs.size()) throw std::runtime_error("wrote " + summary + "; " + std::to_string(jobs.size() - written) + " failed");
+        char rate[64];
+        std::snprintf(rate, sizeof rate, " (%.1f a second)", static_cast<double>(written) / std::max(seconds, 1e-9));
+        return "Rendered " + summary + rate;
     });
 }

@@ -29,7 +29,7 @@ install(FILES ${PROJECT_BINARY_DIR}/raster-config.cmake ${PROJECT_BINARY_DIR}/ra
 file(RELATIVE_PATH RASTER_PC_TO_PREFIX "/${CMAKE_INSTALL_LIBDIR}/pkgconfig" "/")
 string(REGEX REPLACE "/$" "" RASTER_PC_TO_PREFIX "${RASTER_PC_TO_PREFIX}")
 # A static library needs its image and model libraries at every link; a shared one only inside itself.
-set(RASTER_PC_WEBP "libwebp libwebpmux libwebpdemux stb tinyobjloader assimp")
+set(RASTER_PC_WEBP "libwebp libwebpmux libwebpdemux libpng stb tinyobjloader assimp")
 if(BUILD_SHARED_LIBS)
   set(RASTER_PC_REQUIRES "glm")
   set(RASTER_PC_REQUIRES_PRIVATE "${RASTER_PC_WEBP}")

@@ -1,6 +1,7 @@
 #include <raster/depth_buffer.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -38,6 +39,18 @@ float DepthBuffer::at(int x, int y) const {
     }
     if (stale_[static_cast<std::size_t>(y)] != 0) return std::numeric_limits<float>::infinity();  // cleared, not yet filled
     return depths_[static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)];
+}
+
+std::vector<std::uint8_t> DepthBuffer::coverage() const {
+    std::vector<std::uint8_t> alpha(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_), 0);
+    for (int y = 0; y < height_; ++y) {
+        if (stale_[static_cast<std::size_t>(y)] != 0) continue;  // cleared and never drawn on
+        const std::size_t start = static_cast<std::size_t>(y) * static_cast<std::size_t>(width_);
+        for (std::size_t x = 0; x < static_cast<std::size_t>(width_); ++x) {
+            alpha[start + x] = std::isinf(depths_[start + x]) ? 0 : 255;
+        }
+    }
+    return alpha;
 }
 
 }  // namespace raster

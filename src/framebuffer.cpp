@@ -84,4 +84,20 @@ void Framebuffer::clear_rows(int y_begin, int y_end, Rgb colour) noexcept {
     for (std::size_t done = 3; done < size; done *= 2) std::memcpy(first + done, first, std::min(done, size - done));
 }
 
+std::vector<std::uint8_t> rgba_bytes(const Framebuffer& image, std::span<const std::uint8_t> alpha) {
+    const auto pixels = static_cast<std::size_t>(image.width()) * static_cast<std::size_t>(image.height());
+    if (alpha.size() != pixels) {
+        throw std::invalid_argument("alpha has " + std::to_string(alpha.size()) + " bytes for " + std::to_string(pixels) + " pixels");
+    }
+    std::vector<std::uint8_t> rgba(pixels * 4);
+    const std::uint8_t* rgb = image.bytes().data();
+    for (std::size_t i = 0; i < pixels; ++i) {
+        rgba[i * 4] = rgb[i * 3];
+        rgba[i * 4 + 1] = rgb[i * 3 + 1];
+        rgba[i * 4 + 2] = rgb[i * 3 + 2];
+        rgba[i * 4 + 3] = alpha[i];
+    }
+    return rgba;
+}
+
 }  // namespace raster

@@ -106,7 +106,7 @@ ModelStage::ModelStage(std::shared_ptr<const Model> model, const ModelView& view
     if (view.orthographic) {
         if (view.near || view.far) throw std::invalid_argument("--near and --far set a perspective lens; an orthographic view draws the whole model");
         orthographic_ = Scene{OrthoCamera::look_at(width, height, glm::vec3(eye), glm::vec3(target_), glm::vec3(up_)), view.background, lights,
-                       {}, {}};
+                       {}, {}, {}, view.transparent};
         return;
     }
     if (view.near && view.far && !(*view.near < *view.far)) {
@@ -128,7 +128,7 @@ ModelStage::ModelStage(std::shared_ptr<const Model> model, const ModelView& view
     }
     const PerspectiveCamera::Lens lens{view.fov_degrees, near, far};
     perspective_ = PerspectiveScene{PerspectiveCamera::look_at(width, height, glm::vec3(eye), glm::vec3(target_), glm::vec3(up_), lens),
-                              view.background, lights, {}, {}};
+                              view.background, lights, {}, {}, {}, view.transparent};
 }
 
 std::vector<SceneObject> ModelStage::objects(double turn) const {

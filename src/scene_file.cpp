@@ -60,7 +60,10 @@ public:
             buffers_.push_back(std::move(bytes));
             return new Assimp::MemoryIOStream(data, size, false);
         } catch (const std::runtime_error& problem) {
-            if (first_failure_.empty()) first_failure_ = "'" + printable(file) + "' " + problem.what();
+            if (first_failure_.empty()) {
+                first_failure_ = "'" + printable(file) + "' " + problem.what();
+                first_reason_ = problem.what();
+            }
             return nullptr;
         }
     }
@@ -68,12 +71,15 @@ public:
 
     // Why the first file that could not be opened was refused, or "".
     [[nodiscard]] const std::string& first_failure() const noexcept { return first_failure_; }
+    // The same without the file's name: "does not exist".
+    [[nodiscard]] const std::string& first_reason() const noexcept { return first_reason_; }
 
 private:
     const ObjOptions& options_;
     std::vector<InputRecord>& sources_;
     std::vector<std::unique_ptr<std::vector<std::uint8_t>>> buffers_;
     std::string first_failure_;
+    std::string first_reason_;
 };
 
 glm::dmat4 matrix_of(const aiMatrix4x4& m) {
@@ -262,6 +268,11 @@ Model read_scene_file(const std::filesystem::path& path, const ObjOptions& optio
     Assimp::Importer importer;
     auto* files = new BoundedFiles(options, model.sources);  // the importer owns it
     importer.SetIOHandler(files);
+    if (FileIdentity identity; !identity_of(path, identity)) {
+        // assimp would stop at its own existence check, giving no reason: InputFile gives one.
+        if (Assimp::IOStream* stream = files->Open(path.c_str(), "rb")) files->Close(stream);
+        throw std::runtime_error(name + ": " + (files->first_reason().empty() ? kUnreadable : files->first_reason()));
+    }
     // Our own checks follow; assimp's validation refuses indices out of range and broken arrays.
     const aiScene* scene = importer.ReadFile(path.string(), aiProcess_ValidateDataStructure);
     if (!readable(scene)) {

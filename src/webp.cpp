@@ -64,12 +64,14 @@ WebPConfig parallel_config(Effort effort) {
 struct Picture {
     WebPPicture picture;
 
-    explicit Picture(const Framebuffer& image) {
+    Picture(const Framebuffer& image, std::span<const std::uint8_t> alpha) {
         if (!WebPPictureInit(&picture)) throw std::runtime_error("libwebp version mismatch");
         picture.use_argb = 1;
         picture.width = image.width();
         picture.height = image.height();
-        if (!WebPPictureImportRGB(&picture, image.bytes().data(), image.width() * 3)) {
+        const bool imported = alpha.empty() ? WebPPictureImportRGB(&picture, image.bytes().data(), image.width() * 3) != 0
+                                            : WebPPictureImportRGBA(&picture, rgba_bytes(image, alpha).data(), image.width() * 4) != 0;
+        if (!imported) {
             throw std::runtime_error("out of memory importing a frame");
         }
     }
@@ -129,8 +131,9 @@ std::vector<std::uint8_t> encode_lossless(const std::uint8_t* rgb, int width, in
 
 }  // namespace
 
-std::vector<std::uint8_t> encode_webp_still(const Framebuffer& image, Effort effort) {
-    return encode_lossless(image.bytes().data(), image.width(), image.height(), image.width() * 3, lossless_config(effort));
+std::vector<std::uint8_t> encode_webp_still(const Framebuffer& image, Effort effort, std::span<const std::uint8_t> alpha) {
+    if (alpha.empty()) return encode_lossless(image.bytes().data(), image.width(), image.height(), image.width() * 3, lossless_config(effort));
+    return encode_lossless(rgba_bytes(image, alpha).data(), image.width(), image.height(), image.width() * 4, lossless_config(effort), 4);
 }
 
 std::uintmax_t write_webp_still(const Framebuffer& image, const std::filesystem::path& path,
@@ -349,7 +352,7 @@ AnimationEncoder::~AnimationEncoder() = default;
 AnimationEncoder::AnimationEncoder(AnimationEncoder&&) noexcept = default;
 AnimationEncoder& AnimationEncoder::operator=(AnimationEncoder&&) noexcept = default;
 
-void AnimationEncoder::add_frame(const Framebuffer& frame) {
+void AnimationEncoder::add_frame(const Framebuffer& frame, std::span<const std::uint8_t> alpha) {
     if (!state_) throw std::logic_error("AnimationEncoder used after finish()");
     if (frame.width() != state_->width || frame.height() != state_->height) {
         throw std::invalid_argument("frame size differs from the animation's");
@@ -357,9 +360,11 @@ void AnimationEncoder::add_frame(const Framebuffer& frame) {
     const int end_ms = state_->end_of_next_frame();  // the last frame needs its end stamp too
     const auto start_ms = static_cast<int>(state_->next_timestamp_ms);
     if (state_->path == AnimationPath::parallel) {
+        // Its changed rectangles are drawn over the frame before; a pixel turned transparent would not show.
+        if (!alpha.empty()) throw std::invalid_argument("a transparent animation needs the anim path");
         state_->add_in_parallel(frame);
     } else {
-        Picture picture(frame);
+        Picture picture(frame, alpha);
         if (!WebPAnimEncoderAdd(state_->encoder, &picture.picture, start_ms, &state_->config)) {
             state_->fail("frame at " + std::to_string(start_ms) + " ms");
         }
@@ -421,8 +426,11 @@ WebpInfo for_each_webp_frame(const std::filesystem::path& path,
         if (!WebPAnimDecoderGetNext(decoder.get(), &rgba, &end_ms)) {
             throw std::runtime_error("'" + printable(path.string()) + "' has a corrupt frame");
         }
+        const auto pixels = static_cast<std::size_t>(result.width) * static_cast<std::size_t>(result.height);
+        std::vector<std::uint8_t> alpha(pixels);
+        for (std::size_t i = 0; i < pixels; ++i) alpha[i] = rgba[i * 4 + 3];
         const DecodedFrame frame{framebuffer_from_rgba(rgba, result.width, result.height), previous_end_ms,
-                                 end_ms - previous_end_ms};
+                                 end_ms - previous_end_ms, std::move(alpha)};
         previous_end_ms = end_ms;
         if (!visit(frame)) break;
     }

@@ -1,4 +1,5 @@
 // The exporters as a user meets them: help, version, quiet and progress, stdout, safe files.
+#include <raster/png.hpp>
 #include <raster/scenes.hpp>
 #include <raster/version.hpp>
 #include <raster/webp.hpp>
@@ -98,12 +99,16 @@ TEST(Cli, QuietPrintsNothingOnSuccess) {
     }
 }
 
-TEST(Cli, WarnsWhenTheNameDoesNotEndInWebp) {
+TEST(Cli, APngNameWritesPngAndAnOddNameWarns) {
     const ScratchDir dir;
-    const auto result = run(kStillCube, {"cube.png"}, dir.path());
+    auto result = run(kStillCube, {"cube.img"}, dir.path());
     EXPECT_EQ(result.exit_code, 0);
-    EXPECT_EQ(result.err, "still-cube: warning: 'cube.png' does not end in .webp, but it will hold WebP data\n");
-    EXPECT_EQ(raster::read_webp(dir / "cube.png").frames.at(0).image, still_cube());
+    EXPECT_EQ(result.err, "still-cube: warning: 'cube.img' does not end in .webp, but it will hold WebP data\n");
+    EXPECT_EQ(raster::read_webp(dir / "cube.img").frames.at(0).image, still_cube());
+    result = run(kStillCube, {"cube.PNG"}, dir.path());
+    EXPECT_EQ(result.exit_code, 0);
+    EXPECT_EQ(result.err, "");
+    EXPECT_EQ(raster::decode_png(test_support::read_bytes(dir / "cube.PNG"), 1 << 20).image, still_cube());
 }
 
 TEST(Cli, ProgressCountsFramesThenAssemblyWhenAsked) {

@@ -44,7 +44,7 @@ TEST(HostileInputs, RenderNeverWritesOverAFileItReads) {
     std::filesystem::create_symlink("cube.obj", dir / "link.webp");
     std::filesystem::create_hard_link(dir / "cube.obj", dir / "hard.webp");
     const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
-        {{"cube.obj", "cube.obj"}, "render: cannot write 'cube.obj': it is the model this run reads; choose another output name\n"},
+        {{"cube.obj", "-o", "cube.obj"}, "render: cannot write 'cube.obj': it is the model this run reads; choose another output name\n"},
         {{"cube.obj", "cube.mtl"}, "render: cannot write 'cube.mtl': it is the material library this run reads; choose another output name\n"},
         {{"cube.obj", "tex.png"}, "render: cannot write 'tex.png': it is the texture this run reads; choose another output name\n"},
         {{"--texture", "tex.png", "cube.obj", "-o", "tex.png"},
@@ -59,6 +59,11 @@ TEST(HostileInputs, RenderNeverWritesOverAFileItReads) {
         EXPECT_EQ(result.exit_code, 1) << ::testing::PrintToString(arguments);
         EXPECT_EQ(result.err, message);
     }
+    // Written as a second positional, a model's name is taken for a second model, not an output.
+    const auto two = run(kRender, {"cube.obj", "cube.obj"}, dir.path());
+    EXPECT_EQ(two.exit_code, 2);
+    EXPECT_EQ(two.err, "render: 'cube.obj' looks like a model, not a picture to write: give --output-dir DIR to render several "
+                       "models, or -o to write that name anyway (see --help)\n");
     EXPECT_EQ(read_text(dir / "cube.obj"), obj);
     EXPECT_EQ(read_text(dir / "cube.mtl"), mtl);
     EXPECT_EQ(read_text(dir / "tex.png"), png);

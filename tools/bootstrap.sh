@@ -20,7 +20,7 @@ sudo when not root).
 TXT
 }
 
-app_packages=(cmake g++ make pkg-config libglm-dev libwebp-dev libstb-dev libtinyobjloader-dev libassimp-dev libcli11-dev)
+app_packages=(cmake g++ make pkg-config libglm-dev libwebp-dev libpng-dev libstb-dev libtinyobjloader-dev libassimp-dev libcli11-dev)
 base_packages=("${app_packages[@]}" libgtest-dev libbenchmark-dev webp assimp-testmodels)
 
 install_missing() {
@@ -81,7 +81,7 @@ fuzz)
     done
     ;;
 lab)
-    install_missing "${base_packages[@]}" gnuplot-nox
+    install_missing "${base_packages[@]}" gnuplot-nox libtinygltf-dev nlohmann-json3-dev
     build release
     cmake --build --preset release --target lab
     ;;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 namespace raster {
@@ -29,6 +30,9 @@ public:
     }
     // Throws std::out_of_range outside the buffer.
     [[nodiscard]] float at(int x, int y) const;
+    // One byte per pixel, row-major: 255 where a surface was drawn, 0 where nothing was: the
+    // alpha of a picture on a transparent background.
+    [[nodiscard]] std::vector<std::uint8_t> coverage() const;
 
 private:
     void fill_row(int y, float* start) noexcept;

@@ -55,4 +55,8 @@ private:
     std::vector<std::uint8_t> bytes_;
 };
 
+// Packed R, G, B, A bytes: the picture with `alpha` (one byte per pixel, row-major, 255 opaque)
+// woven in. Throws std::invalid_argument unless `alpha` holds one byte per pixel.
+[[nodiscard]] std::vector<std::uint8_t> rgba_bytes(const Framebuffer& image, std::span<const std::uint8_t> alpha);
+
 }  // namespace raster

@@ -29,6 +29,9 @@ struct ModelView {
     std::optional<glm::dvec3> light;  // toward the key light; default from over the viewer's left shoulder
     ShadingMethod shading = ShadingMethod::phong;
     Rgb background{48, 52, 60};
+    // The background is to be left transparent: depth is kept for every model, so that the
+    // pixels drawn can be read afterwards (DepthBuffer::coverage, Renderer::depth).
+    bool transparent = false;
     Culling cull = Culling::automatic;
 };
 

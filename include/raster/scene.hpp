@@ -52,6 +52,9 @@ struct BasicScene {
     std::vector<SceneObject> objects;
     // Light dimmed with view depth (Phase 2 materials in perspective only), as raster-engine does.
     std::optional<DepthDarkening> darkening{};
+    // Depth kept even where the scene needs none, so that the caller can read what was drawn
+    // (DepthBuffer::coverage) for a transparent background.
+    bool keep_depth = false;
 };
 using Scene = BasicScene<OrthoCamera>;
 using PerspectiveScene = BasicScene<PerspectiveCamera>;
@@ -61,7 +64,7 @@ using PerspectiveScene = BasicScene<PerspectiveCamera>;
 [[nodiscard]] bool needs_depth(std::span<const SceneObject> objects) noexcept;
 template <typename Camera>
 [[nodiscard]] bool needs_depth(const BasicScene<Camera>& scene) noexcept {
-    return needs_depth(std::span<const SceneObject>(scene.objects));
+    return scene.keep_depth || needs_depth(std::span<const SceneObject>(scene.objects));
 }
 
 // How a frame is drawn: on how many threads, sharing its vertices, facets and strips of rows.

@@ -28,9 +28,11 @@ enum class Effort {
 // The longest frame a WebP animation can hold: its durations are 24-bit milliseconds.
 inline constexpr int kMaxFrameSpacingMs = (1 << 24) - 1;
 
-// The bytes of a lossless still .webp file.
+// The bytes of a lossless still .webp file; with `alpha` (one byte per pixel, 255 opaque) it
+// keeps transparency.
 [[nodiscard]] std::vector<std::uint8_t> encode_webp_still(const Framebuffer& image,
-                                                          Effort effort = Effort::balanced);
+                                                          Effort effort = Effort::balanced,
+                                                          std::span<const std::uint8_t> alpha = {});
 // Encodes and writes a lossless still; returns the file's size in bytes.
 std::uintmax_t write_webp_still(const Framebuffer& image, const std::filesystem::path& path,
                                 Effort effort = Effort::balanced, OutputPolicy policy = {});
@@ -73,7 +75,9 @@ public:
 
     // Frame i is shown at i * frame_spacing_ms for frame_spacing_ms. Throws std::length_error
     // when the animation would outlast WebP's timestamps (2^31 - 1 ms, about 24.8 days).
-    void add_frame(const Framebuffer& frame);
+    // `alpha` (one byte per pixel) makes the frame's background transparent; only the anim
+    // path keeps it, so the parallel path throws std::invalid_argument for it.
+    void add_frame(const Framebuffer& frame, std::span<const std::uint8_t> alpha = {});
     // Assembles the animation. Call once.
     [[nodiscard]] std::vector<std::uint8_t> finish();
 
@@ -106,6 +110,7 @@ struct DecodedFrame {
     Framebuffer image;
     int start_ms;
     int duration_ms;
+    std::vector<std::uint8_t> alpha;  // one byte per pixel, 255 where opaque
 };
 
 struct DecodedWebp {

@@ -124,6 +124,11 @@ std::string read_text(const fs::path& path) {
     return text.str();
 }
 
+std::vector<std::uint8_t> read_bytes(const fs::path& path) {
+    const std::string text = read_text(path);
+    return {text.begin(), text.end()};
+}
+
 void write_text(const fs::path& path, const std::string& text) {
     std::ofstream(path, std::ios::binary) << text;
 }

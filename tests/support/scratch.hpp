@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -45,6 +46,7 @@ int start(const std::string& program, const std::vector<std::string>& arguments,
 int wait_for_signal(int pid);
 
 std::string read_text(const std::filesystem::path& path);
+std::vector<std::uint8_t> read_bytes(const std::filesystem::path& path);
 void write_text(const std::filesystem::path& path, const std::string& text);
 
 }  // namespace test_support
