@@ -318,19 +318,26 @@ std::string describe_destination(const ExportOptions& options) {
 
 }  // namespace
 
-std::string export_still(const CLI::App& app, const ExportOptions& options, const RenderStill& render) {
+std::function<std::string()> render_still(const CLI::App& app, const ExportOptions& options, const RenderStill& render) {
     check_output(app, options);
-    Progress progress(app.get_name(), options);
-    progress.stage("rendering");
-    raster::Framebuffer frame(options.width, options.height);
-    std::vector<std::uint8_t> alpha;
-    render(frame, alpha);
-    progress.stage("encoding");
-    const std::vector<std::uint8_t> bytes = options.image_format() == ImageFormat::png ? raster::encode_png(frame, alpha)
-                                                                                      : raster::encode_webp_still(frame, options.effort, alpha);
-    deliver(options, bytes);
-    return describe_destination(options) + ": " + std::to_string(options.width) + "x" + std::to_string(options.height) +
-           (alpha.empty() ? " still, " : " still on a transparent background, ") + std::to_string(bytes.size()) + " bytes";
+    auto progress = std::make_shared<Progress>(app.get_name(), options);
+    progress->stage("rendering");
+    auto frame = std::make_shared<raster::Framebuffer>(options.width, options.height);
+    auto alpha = std::make_shared<std::vector<std::uint8_t>>();
+    render(*frame, *alpha);
+    return [options, progress, frame, alpha] {
+        progress->stage("encoding");
+        const std::vector<std::uint8_t> bytes = options.image_format() == ImageFormat::png
+                                                    ? raster::encode_png(*frame, *alpha)
+                                                    : raster::encode_webp_still(*frame, options.effort, *alpha);
+        deliver(options, bytes);
+        return describe_destination(options) + ": " + std::to_string(options.width) + "x" + std::to_string(options.height) +
+               (alpha->empty() ? " still, " : " still on a transparent background, ") + std::to_string(bytes.size()) + " bytes";
+    };
+}
+
+std::string export_still(const CLI::App& app, const ExportOptions& options, const RenderStill& render) {
+    return render_still(app, options, render)();
 }
 
 std::string export_still(const CLI::App& app, const ExportOptions& options, const std::function<void(raster::Framebuffer&)>& render) {

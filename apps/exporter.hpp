@@ -123,6 +123,9 @@ using RenderFrame = std::function<void(raster::Framebuffer&, int index, std::vec
 // Renders one frame of the chosen size, writes it as a still (WebP or PNG) and returns the line
 // to report: "Wrote out.webp: 800x600 still, 4211 bytes".
 std::string export_still(const CLI::App& app, const ExportOptions& options, const RenderStill& render);
+// The same in two steps: checks the output and renders now, and returns the step that encodes,
+// writes and reports, which may run on another thread while the next picture is drawn.
+std::function<std::string()> render_still(const CLI::App& app, const ExportOptions& options, const RenderStill& render);
 std::string export_still(const CLI::App& app, const ExportOptions& options,
                          const std::function<void(raster::Framebuffer&)>& render);
 // --fps 1..95, with the browsers' 10 ms rule in its help, --encoder parallel|anim and

@@ -10,6 +10,8 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
+#include <future>
 #include <iostream>
 #include <numbers>
 #include <optional>
@@ -108,9 +110,10 @@ LoadedModel load_model(const std::string& path, const RenderPlan& plan) {
     return loaded;
 }
 
-// Draws one loaded model into `options.output` (or its frames) and returns the line to report.
-std::string render_model(const CLI::App& app, ExportOptions options, const LoadedModel& loaded, const RenderPlan& plan,
-                         raster::Renderer& renderer) {
+// Draws one loaded model and returns the step that finishes it: a still's encoding and writing,
+// which may overlap the next model's drawing, ending in the line to report.
+std::function<std::string()> render_model(const CLI::App& app, ExportOptions options, const LoadedModel& loaded,
+                                          const RenderPlan& plan, raster::Renderer& renderer) {
     const auto start = std::chrono::steady_clock::now();
     options.inputs = loaded.inputs;
     if (!options.quiet) {
@@ -121,15 +124,17 @@ std::string render_model(const CLI::App& app, ExportOptions options, const Loade
         stage.render(frame, renderer, turn);
         if (plan.view.transparent) alpha = renderer.depth().coverage();
     };
-    std::string report;
+    const std::string tail = ", " + std::to_string(loaded.triangles) + " triangles, ";
+    const double loading = loaded.seconds;
     if (plan.frames == 0) {
-        report = export_still(app, options, [&](raster::Framebuffer& frame, std::vector<std::uint8_t>& alpha) { draw(frame, 0.0, alpha); });
-    } else {
-        report = export_animation(app, options, plan.frames, plan.fps, [&](raster::Framebuffer& frame, int index, std::vector<std::uint8_t>& alpha) {
-            draw(frame, 2.0 * std::numbers::pi * index / plan.frames, alpha);
-        });
+        auto finish = render_still(app, options, [&](raster::Framebuffer& frame, std::vector<std::uint8_t>& alpha) { draw(frame, 0.0, alpha); });
+        return [finish = std::move(finish), tail, loading, start] { return finish() + tail + seconds_text(loading + seconds_since(start)); };
     }
-    return report + ", " + std::to_string(loaded.triangles) + " triangles, " + seconds_text(loaded.seconds + seconds_since(start));
+    std::string report = export_animation(app, options, plan.frames, plan.fps, [&](raster::Framebuffer& frame, int index, std::vector<std::uint8_t>& alpha) {
+        draw(frame, 2.0 * std::numbers::pi * index / plan.frames, alpha);
+    });
+    report += tail + seconds_text(loading + seconds_since(start));
+    return [report] { return report; };
 }
 
 bool looks_like_a_model(const std::string& name) {
@@ -267,7 +272,7 @@ int main(int argc, char** argv) {
                                            "models, or -o to write that name anyway");
             }
             if (!named) options.output = std::filesystem::path(model_path).stem().string() + extension;
-            return render_model(app, options, load_model(model_path, plan), plan, renderer);
+            return render_model(app, options, load_model(model_path, plan), plan, renderer)();
         }
         std::vector<std::string> models{model_path};
         if (app.count("output") > 0) models.push_back(options.output);
@@ -279,18 +284,37 @@ int main(int argc, char** argv) {
             throw std::runtime_error("cannot make the output directory '" + raster::printable(output_dir) + "'" +
                                      (error ? ": " + error.message() : ": a file of that name is in the way"));
         }
-        const std::size_t written = run_prefetched<LoadedModel>(
+        const auto report_failure = [&](const BatchJob& job, const std::string& reason) {
+            const std::string model = raster::printable(job.model);
+            std::cerr << app.get_name() << ": " << (reason.starts_with(model + ":") ? "" : model + ": ") << reason << '\n';
+        };
+        // One picture is encoded and written while the next model is drawn.
+        std::future<std::string> writing;
+        const BatchJob* written_job = nullptr;
+        std::size_t failed_writes = 0;
+        const auto wait_for_writing = [&] {
+            if (!writing.valid()) return;
+            try {
+                const std::string report = writing.get();
+                if (!options.quiet) std::cout << report << '\n' << std::flush;
+            } catch (const std::exception& problem) {
+                report_failure(*written_job, problem.what());
+                ++failed_writes;
+            }
+        };
+        const std::size_t drawn = run_prefetched<LoadedModel>(
             jobs, [&](const BatchJob& job) { return load_model(job.model, plan); },
             [&](const BatchJob& job, LoadedModel& loaded) {
                 ExportOptions one = options;
                 one.output = job.output.string();
-                const std::string report = render_model(app, one, loaded, plan, renderer);
-                if (!options.quiet) std::cout << report << '\n' << std::flush;
+                std::function<std::string()> finish = render_model(app, one, loaded, plan, renderer);
+                wait_for_writing();
+                writing = std::async(std::launch::async, std::move(finish));
+                written_job = &job;
             },
-            [&](const BatchJob& job, const std::string& reason) {
-                const std::string model = raster::printable(job.model);
-                std::cerr << app.get_name() << ": " << (reason.starts_with(model + ":") ? "" : model + ": ") << reason << '\n';
-            });
+            report_failure);
+        wait_for_writing();
+        const std::size_t written = drawn - failed_writes;
         const double seconds = seconds_since(start);
         const std::string summary = std::to_string(written) + " of " + std::to_string(jobs.size()) + " models into " +
                                     raster::printable(output_dir) + " in " + seconds_text(seconds);

@@ -197,6 +197,7 @@ std::vector<Triangle> split_quad(std::span<const glm::dvec3> corners) {
 std::vector<Triangle> triangles_of_polygon(std::span<const glm::dvec3> corners) {
     std::vector<Triangle> triangles;
     if (corners.size() < 3) return triangles;
+    if (corners.size() == 3) return {{0, 1, 2}};  // most faces: no plane or ring to build
     triangles.reserve(corners.size() - 2);
     std::vector<glm::dvec2> outline = counter_clockwise_outline(corners);
     if (outline.empty()) {  // no plane, so no area to cover: any n - 2 triangles do
