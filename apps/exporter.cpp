@@ -165,8 +165,8 @@ CLI::Validator one_of(const std::vector<std::string>& names) {
 }
 
 void add_output_options(CLI::App& app, ExportOptions& options) {
-    const std::string output_help = "WebP file to write, replaced whole or not at all; - writes to "
-                                    "standard output. Default: " + options.output;
+    const std::string output_help = "Picture to write: PNG for a name ending in .png or --format png, else WebP; replaced "
+                                    "whole or not at all; - writes to standard output. Default: " + options.output;
     auto* positional = app.add_option("output", options.output, output_help)->option_text("FILE");
     auto* named = app.add_option("-o,--output", options.output, "The same, as an option")->option_text("FILE");
     positional->excludes(named);
@@ -178,8 +178,8 @@ void add_output_options(CLI::App& app, ExportOptions& options) {
     add_choice_option<raster::Effort>(
         app, "--effort", options.effort,
         {{"fast", raster::Effort::fast}, {"default", raster::Effort::balanced}, {"max", raster::Effort::max}},
-        "Lossless compression effort: fast (quickest, largest file), default (small file), max "
-        "(smallest, many times slower)",
+        "Lossless WebP compression effort: fast (quickest, largest file), default (small file), max "
+        "(smallest, many times slower); PNG has one",
         "default");
     app.add_flag("-q,--quiet", options.quiet, "Print nothing when all goes well");
     app.add_flag("--progress", options.progress,
@@ -218,7 +218,7 @@ void add_style_option(CLI::App& app, raster::CubeStyle& style, const std::string
 }
 
 Progress::Progress(std::string program, const ExportOptions& options)
-    : program_(std::move(program)), enabled_(options.progress || (!options.quiet && is_terminal(2))),
+    : program_(std::move(program)), enabled_(options.show_progress && (options.progress || (!options.quiet && is_terminal(2)))),
       terminal_(is_terminal(2)) {}
 
 Progress::~Progress() {
@@ -318,7 +318,7 @@ std::string describe_destination(const ExportOptions& options) {
 
 }  // namespace
 
-std::function<std::string()> render_still(const CLI::App& app, const ExportOptions& options, const RenderStill& render) {
+std::function<FinishedPicture()> render_still(const CLI::App& app, const ExportOptions& options, const RenderStill& render) {
     check_output(app, options);
     auto progress = std::make_shared<Progress>(app.get_name(), options);
     progress->stage("rendering");
@@ -330,14 +330,16 @@ std::function<std::string()> render_still(const CLI::App& app, const ExportOptio
         const std::vector<std::uint8_t> bytes = options.image_format() == ImageFormat::png
                                                     ? raster::encode_png(*frame, *alpha)
                                                     : raster::encode_webp_still(*frame, options.effort, *alpha);
-        deliver(options, bytes);
-        return describe_destination(options) + ": " + std::to_string(options.width) + "x" + std::to_string(options.height) +
-               (alpha->empty() ? " still, " : " still on a transparent background, ") + std::to_string(bytes.size()) + " bytes";
+        std::string report = describe_destination(options) + ": " + std::to_string(options.width) + "x" + std::to_string(options.height) +
+                             (alpha->empty() ? " still, " : " still on a transparent background, ") + std::to_string(bytes.size()) + " bytes";
+        return FinishedPicture{bytes, std::move(report)};
     };
 }
 
 std::string export_still(const CLI::App& app, const ExportOptions& options, const RenderStill& render) {
-    return render_still(app, options, render)();
+    const FinishedPicture done = render_still(app, options, render)();
+    deliver(options, done.bytes);
+    return done.report;
 }
 
 std::string export_still(const CLI::App& app, const ExportOptions& options, const std::function<void(raster::Framebuffer&)>& render) {

@@ -34,6 +34,7 @@ struct ExportOptions {
     std::optional<ImageFormat> format;  // default: PNG for a name ending in .png, else WebP
     std::string frames_dir;  // an animation written as numbered PNG frames into this directory
     bool transparent = false;  // frames come with alpha: animations take the anim path, which keeps it
+    bool show_progress = true;  // off for the pictures of a batch, which are made several at once
 
     [[nodiscard]] ImageFormat image_format() const;
 
@@ -123,9 +124,15 @@ using RenderFrame = std::function<void(raster::Framebuffer&, int index, std::vec
 // Renders one frame of the chosen size, writes it as a still (WebP or PNG) and returns the line
 // to report: "Wrote out.webp: 800x600 still, 4211 bytes".
 std::string export_still(const CLI::App& app, const ExportOptions& options, const RenderStill& render);
-// The same in two steps: checks the output and renders now, and returns the step that encodes,
-// writes and reports, which may run on another thread while the next picture is drawn.
-std::function<std::string()> render_still(const CLI::App& app, const ExportOptions& options, const RenderStill& render);
+// A picture encoded and the line that will report it; `written` when it is already on disk.
+struct FinishedPicture {
+    std::vector<std::uint8_t> bytes;
+    std::string report;
+    bool written = false;
+};
+// The same in steps: checks the output and renders now, and returns the step that encodes, which
+// may run on another thread while the next picture is drawn; deliver() then writes the bytes.
+std::function<FinishedPicture()> render_still(const CLI::App& app, const ExportOptions& options, const RenderStill& render);
 std::string export_still(const CLI::App& app, const ExportOptions& options,
                          const std::function<void(raster::Framebuffer&)>& render);
 // --fps 1..95, with the browsers' 10 ms rule in its help, --encoder parallel|anim and

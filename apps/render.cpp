@@ -6,13 +6,17 @@
 #include <raster/obj_file.hpp>
 #include <raster/texture_file.hpp>
 
+#include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <deque>
 #include <filesystem>
 #include <functional>
 #include <future>
 #include <iostream>
+#include <memory>
 #include <numbers>
 #include <optional>
 #include <string>
@@ -79,6 +83,7 @@ struct LoadedModel {
     std::vector<std::string> warnings;
     std::size_t triangles = 0;
     double seconds = 0.0;  // reading it took
+    std::string refusal;  // why a batch will not draw it, though it was read
 };
 
 // What every model of a run shares: how to read it and how to look at it.
@@ -110,10 +115,10 @@ LoadedModel load_model(const std::string& path, const RenderPlan& plan) {
     return loaded;
 }
 
-// Draws one loaded model and returns the step that finishes it: a still's encoding and writing,
-// which may overlap the next model's drawing, ending in the line to report.
-std::function<std::string()> render_model(const CLI::App& app, ExportOptions options, const LoadedModel& loaded,
-                                          const RenderPlan& plan, raster::Renderer& renderer) {
+// Draws one loaded model and returns the step that finishes it: a still's encoding, which may
+// overlap the next model's drawing (an animation is written at once).
+std::function<FinishedPicture()> render_model(const CLI::App& app, ExportOptions options, const LoadedModel& loaded,
+                                              const RenderPlan& plan, raster::Renderer& renderer) {
     const auto start = std::chrono::steady_clock::now();
     options.inputs = loaded.inputs;
     if (!options.quiet) {
@@ -128,13 +133,17 @@ std::function<std::string()> render_model(const CLI::App& app, ExportOptions opt
     const double loading = loaded.seconds;
     if (plan.frames == 0) {
         auto finish = render_still(app, options, [&](raster::Framebuffer& frame, std::vector<std::uint8_t>& alpha) { draw(frame, 0.0, alpha); });
-        return [finish = std::move(finish), tail, loading, start] { return finish() + tail + seconds_text(loading + seconds_since(start)); };
+        return [finish = std::move(finish), tail, loading, start] {
+            FinishedPicture done = finish();
+            done.report += tail + seconds_text(loading + seconds_since(start));
+            return done;
+        };
     }
     std::string report = export_animation(app, options, plan.frames, plan.fps, [&](raster::Framebuffer& frame, int index, std::vector<std::uint8_t>& alpha) {
         draw(frame, 2.0 * std::numbers::pi * index / plan.frames, alpha);
     });
     report += tail + seconds_text(loading + seconds_since(start));
-    return [report] { return report; };
+    return [report] { return FinishedPicture{{}, report, true}; };
 }
 
 bool looks_like_a_model(const std::string& name) {
@@ -260,9 +269,15 @@ int main(int argc, char** argv) {
                 raster::read_texture(plan.texture_path, raster::kMaxTextureTexels, plan.obj.confine, &plan.texture_inputs));
         }
         raster::Renderer renderer(options.render_options());
-        const std::string extension = options.image_format() == ImageFormat::png ? ".png" : ".webp";
+        // Named outputs take their format from the name; made names from --format, else WebP.
+        const bool named = output_dir.empty() && app.count("output") + app.count("--output") > 0;
+        const ImageFormat format = named ? options.image_format() : options.format.value_or(ImageFormat::webp);
+        const std::string extension = format == ImageFormat::png ? ".png" : ".webp";
+        if (plan.frames > 0 && options.frames_dir.empty() && format == ImageFormat::png) {
+            throw CLI::ValidationError("a PNG file holds one picture: write the turntable to .webp, or to numbered PNG frames "
+                                       "with --frames-dir DIR");
+        }
         if (output_dir.empty()) {
-            const bool named = app.count("output") + app.count("--output") > 0;
             if (!more_models.empty()) {
                 throw CLI::ValidationError("several models need --output-dir DIR, for example: render a.obj b.glb --output-dir thumbs");
             }
@@ -271,11 +286,26 @@ int main(int argc, char** argv) {
                                            "' looks like a model, not a picture to write: give --output-dir DIR to render several "
                                            "models, or -o to write that name anyway");
             }
-            if (!named) options.output = std::filesystem::path(model_path).stem().string() + extension;
-            return render_model(app, options, load_model(model_path, plan), plan, renderer)();
+            if (!named) {
+                options.output = std::filesystem::path(model_path).stem().string() + extension;
+                options.format = format;
+            }
+            const LoadedModel loaded = load_model(model_path, plan);
+            const FinishedPicture done = render_model(app, options, loaded, plan, renderer)();
+            if (!done.written) {
+                options.inputs = loaded.inputs;
+                deliver(options, done.bytes);
+            }
+            return done.report;
         }
         std::vector<std::string> models{model_path};
-        if (app.count("output") > 0) models.push_back(options.output);
+        if (app.count("output") > 0) {
+            if (!looks_like_a_model(options.output)) {
+                throw CLI::ValidationError("'" + raster::printable(options.output) + "' is not a model (.obj, .gltf, .glb, .stl or .ply); "
+                                           "with --output-dir, pictures are named after their models");
+            }
+            models.push_back(options.output);
+        }
         models.insert(models.end(), more_models.begin(), more_models.end());
         const std::vector<BatchJob> jobs = plan_batch(models, output_dir, extension);
         std::error_code error;
@@ -288,32 +318,63 @@ int main(int argc, char** argv) {
             const std::string model = raster::printable(job.model);
             std::cerr << app.get_name() << ": " << (reason.starts_with(model + ":") ? "" : model + ": ") << reason << '\n';
         };
-        // One picture is encoded and written while the next model is drawn.
-        std::future<std::string> writing;
-        const BatchJob* written_job = nullptr;
+        // Pictures are encoded on one thread per core at most while the next models are drawn
+        // (encoding is most of a small model's time), and written between two reads, checked
+        // against every file any model has read: no picture replaces another model's input.
+        struct Encoding {
+            const BatchJob* job;
+            ExportOptions options;
+            std::future<FinishedPicture> picture;
+        };
+        std::deque<Encoding> encoding, encoded;
+        const auto in_flight = static_cast<std::size_t>(options.threads_in_use());
+        std::vector<raster::InputRecord> every_input;
+        std::vector<raster::FileIdentity> pictures;  // written so far
         std::size_t failed_writes = 0;
-        const auto wait_for_writing = [&] {
-            if (!writing.valid()) return;
-            try {
-                const std::string report = writing.get();
-                if (!options.quiet) std::cout << report << '\n' << std::flush;
-            } catch (const std::exception& problem) {
-                report_failure(*written_job, problem.what());
-                ++failed_writes;
+        const auto write_encoded = [&] {
+            for (Encoding& done : encoded) {
+                try {
+                    const FinishedPicture picture = done.picture.get();
+                    done.options.inputs = every_input;
+                    if (!picture.written) deliver(done.options, picture.bytes);
+                    if (raster::FileIdentity identity; raster::identity_of(done.options.output, identity)) pictures.push_back(identity);
+                    if (!options.quiet) std::cout << picture.report << '\n' << std::flush;
+                } catch (const std::exception& problem) {
+                    report_failure(*done.job, problem.what());
+                    ++failed_writes;
+                }
             }
+            encoded.clear();
         };
         const std::size_t drawn = run_prefetched<LoadedModel>(
             jobs, [&](const BatchJob& job) { return load_model(job.model, plan); },
             [&](const BatchJob& job, LoadedModel& loaded) {
+                if (!loaded.refusal.empty()) throw std::runtime_error(loaded.refusal);
                 ExportOptions one = options;
                 one.output = job.output.string();
-                std::function<std::string()> finish = render_model(app, one, loaded, plan, renderer);
-                wait_for_writing();
-                writing = std::async(std::launch::async, std::move(finish));
-                written_job = &job;
+                one.show_progress = false;
+                std::function<FinishedPicture()> finish = render_model(app, one, loaded, plan, renderer);
+                while (encoding.size() >= in_flight) {  // wait for the oldest; it is written between reads
+                    encoding.front().picture.wait();
+                    encoded.push_back(std::move(encoding.front()));
+                    encoding.pop_front();
+                }
+                encoding.push_back({&job, std::move(one), std::async(std::launch::async, std::move(finish))});
+            },
+            [&](LoadedModel* loaded) {
+                if (loaded != nullptr) {  // what it read is known before anything more is written
+                    for (const raster::InputRecord& input : loaded->inputs) {
+                        if (std::find(pictures.begin(), pictures.end(), input.identity) != pictures.end()) {
+                            loaded->refusal = "reads '" + raster::printable(input.path.string()) + "', a picture this run wrote";
+                        }
+                    }
+                    every_input.insert(every_input.end(), loaded->inputs.begin(), loaded->inputs.end());
+                }
+                write_encoded();
             },
             report_failure);
-        wait_for_writing();
+        for (Encoding& last : encoding) encoded.push_back(std::move(last));
+        write_encoded();
         const std::size_t written = drawn - failed_writes;
         const double seconds = seconds_since(start);
         const std::string summary = std::to_string(written) + " of " + std::to_string(jobs.size()) + " models into " +

@@ -1,5 +1,9 @@
 #include "exporter.hpp"
 
+#include <raster/png.hpp>
+
+#include <algorithm>
+
 #include <optional>
 #include <stdexcept>
 
@@ -25,17 +29,21 @@ int main(int argc, char** argv) {
         if (raster::FileIdentity identity; raster::identity_of(input, identity)) options.inputs.push_back({input, identity, "animation"});
         check_output(app, options);
         std::optional<raster::Framebuffer> found;
+        std::vector<std::uint8_t> alpha;
         int seen = 0;
         const raster::WebpInfo info = raster::for_each_webp_frame(input, [&](const raster::DecodedFrame& frame) {
             if (seen++ < index) return true;
             found = frame.image;
+            // An opaque frame stays opaque; a transparent one keeps its alpha.
+            if (std::any_of(frame.alpha.begin(), frame.alpha.end(), [](std::uint8_t a) { return a != 255; })) alpha = frame.alpha;
             return false;
         }, &options.inputs);
         if (!found) {
             throw std::runtime_error("'" + input + "' has " + std::to_string(info.frame_count) +
                                      " frame(s), numbered 0.." + std::to_string(info.frame_count - 1));
         }
-        const std::vector<std::uint8_t> bytes = raster::encode_webp_still(*found, options.effort);
+        const std::vector<std::uint8_t> bytes = options.image_format() == ImageFormat::png ? raster::encode_png(*found, alpha)
+                                                                                          : raster::encode_webp_still(*found, options.effort, alpha);
         deliver(options, bytes);
         return "Wrote " + (options.output == "-" ? std::string("standard output") : raster::printable(options.output)) + ": frame " +
                std::to_string(index) + " of " + raster::printable(input) + ", " + std::to_string(info.width) + "x" +

@@ -3,12 +3,14 @@
 
 #include "model_builder.hpp"
 #include "named_path.hpp"
+#include "ply_header.hpp"
 #include "polygon_triangles.hpp"
 
 #include <raster/input_file.hpp>
 #include <raster/texture_file.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -38,7 +40,9 @@ constexpr int kMaxNodeDepth = 256;
 // files only, sizes capped, confinement kept, each one remembered as an input of the run.
 class BoundedFiles final : public Assimp::IOSystem {
 public:
-    BoundedFiles(const ObjOptions& options, std::vector<InputRecord>& sources) : options_(options), sources_(sources) {}
+    // `ply`: the model is read as PLY, so its header is checked before assimp parses it.
+    BoundedFiles(const ObjOptions& options, std::vector<InputRecord>& sources, bool ply = false)
+        : options_(options), sources_(sources), ply_(ply) {}
 
     bool Exists(const char* file) const override {
         FileIdentity identity;
@@ -55,6 +59,9 @@ public:
         try {
             if (FileIdentity identity; identity_of(file, identity)) sources_.push_back({file, identity, rules.role});
             auto bytes = std::make_unique<std::vector<std::uint8_t>>(read_input_file(file, rules));
+            if (ply_ && rules.role == "model") {
+                if (std::string problem = detail::ply_header_problem(*bytes); !problem.empty()) throw std::runtime_error(problem);
+            }
             const std::uint8_t* data = bytes->data();
             const std::size_t size = bytes->size();
             buffers_.push_back(std::move(bytes));
@@ -80,6 +87,7 @@ private:
     std::vector<std::unique_ptr<std::vector<std::uint8_t>>> buffers_;
     std::string first_failure_;
     std::string first_reason_;
+    bool ply_;
 };
 
 glm::dmat4 matrix_of(const aiMatrix4x4& m) {
@@ -266,7 +274,9 @@ Model read_scene_file(const std::filesystem::path& path, const ObjOptions& optio
     const std::string name = printable(path.string());
     Model model;
     Assimp::Importer importer;
-    auto* files = new BoundedFiles(options, model.sources);  // the importer owns it
+    std::string extension = path.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    auto* files = new BoundedFiles(options, model.sources, extension == ".ply");  // the importer owns it
     importer.SetIOHandler(files);
     if (FileIdentity identity; !identity_of(path, identity)) {
         // assimp would stop at its own existence check, giving no reason: InputFile gives one.
@@ -277,6 +287,7 @@ Model read_scene_file(const std::filesystem::path& path, const ObjOptions& optio
     const aiScene* scene = importer.ReadFile(path.string(), aiProcess_ValidateDataStructure);
     if (!readable(scene)) {
         const std::string& why = files->first_failure();
+        if (why.starts_with("'" + name + "' ")) throw std::runtime_error(name + ": " + files->first_reason());  // the model itself
         throw std::runtime_error(name + ": " + (why.empty() ? kUnreadable : why));
     }
     model_from_scene(*scene, path, name, options, model);
@@ -291,6 +302,9 @@ Model parse_scene_file(std::span<const std::uint8_t> bytes, const std::string& f
     no_files.confine = "/nonexistent-raster-memory-only";  // a buffer or image the text names is never opened
     Assimp::Importer importer;
     importer.SetIOHandler(new BoundedFiles(no_files, model.sources));
+    if (format == "ply") {
+        if (std::string problem = detail::ply_header_problem(bytes); !problem.empty()) throw std::runtime_error(name + ": " + problem);
+    }
     const aiScene* scene = importer.ReadFileFromMemory(bytes.data(), bytes.size(), aiProcess_ValidateDataStructure, format.c_str());
     if (!readable(scene)) throw std::runtime_error(name + ": " + kUnreadable);
     model_from_scene(*scene, "", name, no_files, model);

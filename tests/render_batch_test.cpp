@@ -107,3 +107,31 @@ TEST(RenderBatch, SeveralModelsWithoutAnOutputDirectoryAreAUsageError) {
     result = run(kRender, {"crate.obj", "--turntable", "2", "--frames-dir", "f", "--output-dir", "thumbs"}, dir.path());
     EXPECT_EQ(result.exit_code, 2) << result.err;
 }
+
+TEST(RenderBatch, NoPictureReplacesAnotherModelsInputAndNoModelReadsAPictureOfThisRun) {
+    const ScratchDir dir;
+    write_models(dir);
+    // wall.obj's texture is brick.png, and brick.stl's picture would be brick.png in the same place.
+    test_support::write_text(dir / "wall.mtl", "newmtl crate\nmap_Kd brick.png\n");
+    test_support::write_text(dir / "wall.obj", test_support::textured_cube_obj("wall.mtl", "crate"));
+    std::filesystem::copy_file(dir / "checker.png", dir / "brick.png");
+    std::filesystem::copy_file(dir / "tetra.stl", dir / "brick.stl");
+    const std::string texture = test_support::read_text(dir / "brick.png");
+    // On one thread the order of work is fixed: brick's picture is due to be written just after
+    // wall.obj has read brick.png, and it is refused.
+    auto result = run(kRender, {"brick.stl", "tetra.stl", "wall.obj", "--threads", "1", "--format", "png", "--output-dir", ".",
+                                "--width", "20", "--height", "20"},
+                      dir.path());
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_NE(result.err.find("render: brick.stl: cannot write './brick.png': it is the texture"), std::string::npos) << result.err;
+    EXPECT_EQ(test_support::read_text(dir / "brick.png"), texture);
+    // Here brick's picture is written before wall.obj is read, and wall.obj is refused for reading it.
+    for (const char* old : {"tetra.png", "wall.png", "pyramid.png"}) std::filesystem::remove(dir / old);
+    std::filesystem::copy_file(dir / "brick.png", dir / "brick-texture.png");
+    result = run(kRender, {"brick.stl", "tetra.stl", "pyramid.ply", "wall.obj", "--threads", "1", "--format", "png", "--output-dir", ".",
+                           "--width", "20", "--height", "20"},
+                 dir.path());
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_NE(result.err.find("render: wall.obj: reads 'brick.png', a picture this run wrote"), std::string::npos) << result.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "wall.png"));
+}

@@ -112,8 +112,12 @@ TEST(RenderOutputs, OutputsThatCannotBeAreOneLine) {
     const ScratchDir dir;
     test_support::write_crate_on_floor(dir.path());
     auto result = run(kRender, {"crate.obj", "--turntable", "2", "spin.png"}, dir.path());
-    EXPECT_EQ(result.exit_code, 1);
-    EXPECT_EQ(result.err, "render: a PNG file holds one picture: write the animation to a .webp file, or to numbered PNG frames with --frames-dir DIR\n");
+    EXPECT_EQ(result.exit_code, 2);
+    EXPECT_EQ(result.err, "render: a PNG file holds one picture: write the turntable to .webp, or to numbered PNG frames with --frames-dir "
+                          "DIR (see --help)\n");
+    result = run(kRender, {"crate.obj", "--turntable", "2", "--output-dir", "t", "--format", "png"}, dir.path());
+    EXPECT_EQ(result.exit_code, 2) << result.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "t"));
     result = run(kRender, {"crate.obj", "--frames-dir", "f"}, dir.path());
     EXPECT_EQ(result.exit_code, 2);
     EXPECT_EQ(result.err, "render: --frames-dir writes the frames of a turntable; add --turntable N (see --help)\n");

@@ -10,7 +10,8 @@ usage: tools/bootstrap.sh COMMAND
   test               build in Release and run every test
   sanitize           build with AddressSanitizer and UndefinedBehaviorSanitizer and run every test
   fuzz [SECONDS]     build the libFuzzer targets with clang; fuzz fill and line, the mesh
-                     pipeline, then model and texture loading, for SECONDS each (default 60)
+                     pipeline, OBJ and texture loading for SECONDS each (default 60), then
+                     replay the glTF/STL/PLY target's seeds
   lab                measure every raster method and redraw the charts in doc/lab/
   bench [N]          build raster-vs-gl and time raster against Mesa's llvmpipe, every case
                      N times (default 3), interleaved; writes doc/bench/
@@ -72,12 +73,17 @@ fuzz)
     seconds="${2:-60}"
     install_missing "${base_packages[@]}" clang libclang-rt-14-dev
     build fuzz
-    for target in fuzz_raster fuzz_mesh fuzz_model; do
+    for target in fuzz_raster fuzz_mesh fuzz_model fuzz_scene; do
         mkdir -p "build/fuzz/corpus/$target"
         # New finds go to the first folder; the committed seeds (lab/seeds/) are read, never written.
         seeds=()
         [ -d "lab/seeds/$target" ] && seeds=("lab/seeds/$target")
-        build/fuzz/lab/$target -max_total_time="$seconds" -print_final_stats=1 "build/fuzz/corpus/$target" "${seeds[@]}"
+        run=(-max_total_time="$seconds")
+        # assimp 5.2.5 leaks, and within minutes frees memory it never allocated, on malformed
+        # files: its bugs, not ours. Its target replays the committed finds (files that hung it
+        # before raster checked PLY headers) once each; `fuzz_scene DIR` fuzzes it by hand.
+        [ "$target" = fuzz_scene ] && run=(-runs=0 -timeout=10 -detect_leaks=0)
+        build/fuzz/lab/$target "${run[@]}" -print_final_stats=1 "build/fuzz/corpus/$target" "${seeds[@]}"
     done
     ;;
 lab)
