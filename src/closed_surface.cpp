@@ -72,6 +72,7 @@ Mesh both_sides(const Mesh& mesh) {
     doubled.positions.insert(doubled.positions.end(), mesh.positions.begin(), mesh.positions.end());
     for (const glm::vec3& n : mesh.normals) doubled.normals.push_back(-n);
     if (!mesh.uvs.empty()) doubled.uvs.insert(doubled.uvs.end(), mesh.uvs.begin(), mesh.uvs.end());
+    if (!mesh.colours.empty()) doubled.colours.insert(doubled.colours.end(), mesh.colours.begin(), mesh.colours.end());
     for (const Facet& facet : mesh.facets) {
         const auto& c = facet.corners;
         doubled.facets.push_back({{c[0] + count, c[2] + count, c[1] + count}, -facet.normal});

@@ -47,6 +47,7 @@ Posing::Posing(const Mesh& mesh, const glm::mat4& model, PoseParts parts)
     result_.positions.resize(mesh.positions.size());
     result_.normals.resize(mesh.normals.size());  // zero where vertex normals are left out
     result_.uvs = mesh.uvs;
+    result_.colours = mesh.colours;
     result_.facets.resize(mesh.facets.size());
 }
 

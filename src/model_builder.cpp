@@ -31,8 +31,8 @@ glm::vec3 unit_of(glm::dvec3 v) {
 // smoothing compares every pair, and a fan of thousands would take quadratic time.
 constexpr std::size_t kMaxSmoothedNeighbours = 64;
 
-// A vertex of the output: one position with one normal and one texture coordinate.
-using VertexKey = std::tuple<std::int64_t, std::uint32_t, std::uint32_t, std::uint32_t, std::int64_t>;
+// A vertex of the output: one position with one normal, one texture coordinate and one colour.
+using VertexKey = std::tuple<std::int64_t, std::uint32_t, std::uint32_t, std::uint32_t, std::int64_t, std::int64_t>;
 
 std::uint32_t bits_of(float value) {
     std::uint32_t bits = 0;
@@ -70,10 +70,11 @@ std::vector<std::pair<int, Mesh>> meshes_by_material(const PolygonSoup& soup, do
 
     std::map<int, Mesh> meshes;
     std::map<int, std::map<VertexKey, std::uint32_t>> vertices;
-    std::map<int, bool> textured;
+    std::map<int, bool> textured, coloured;
     for (const SoupTriangle& triangle : soup.triangles) {
-        if (triangle.corners[0].uv != kNoIndex || triangle.corners[1].uv != kNoIndex || triangle.corners[2].uv != kNoIndex) {
-            textured[triangle.material] = true;
+        for (const SoupCorner& corner : triangle.corners) {
+            if (corner.uv != kNoIndex) textured[triangle.material] = true;
+            if (corner.colour != kNoIndex) coloured[triangle.material] = true;
         }
     }
     for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
@@ -81,19 +82,23 @@ std::vector<std::pair<int, Mesh>> meshes_by_material(const PolygonSoup& soup, do
         const SoupTriangle& triangle = soup.triangles[t];
         Mesh& mesh = meshes[triangle.material];
         auto& index_of = vertices[triangle.material];
-        const bool with_uvs = textured[triangle.material];
+        const bool with_uvs = textured[triangle.material], with_colours = coloured[triangle.material];
         Facet facet{{}, unit[t]};
         for (std::size_t k = 0; k < 3; ++k) {
             const SoupCorner& corner = triangle.corners[k];
             glm::vec3 normal(0.0F);  // the file's, unless it has none or a zero or broken one
             if (corner.normal != kNoIndex) normal = unit_or_zero(soup.normals[static_cast<std::size_t>(corner.normal)]);
             if (normal == glm::vec3(0.0F)) normal = generated_normal(t, corner.position);
-            const VertexKey key{corner.position, bits_of(normal.x), bits_of(normal.y), bits_of(normal.z), corner.uv};
+            const VertexKey key{corner.position, bits_of(normal.x), bits_of(normal.y), bits_of(normal.z), corner.uv, corner.colour};
             const auto [at, added] = index_of.try_emplace(key, static_cast<std::uint32_t>(mesh.positions.size()));
             if (added) {
                 mesh.positions.push_back(soup.positions[static_cast<std::size_t>(corner.position)]);
                 mesh.normals.push_back(normal);
                 if (with_uvs) mesh.uvs.push_back(corner.uv != kNoIndex ? soup.uvs[static_cast<std::size_t>(corner.uv)] : glm::vec2(0.0F));
+                // A corner without a colour in a part with colours shows the material as it is.
+                if (with_colours) {
+                    mesh.colours.push_back(corner.colour != kNoIndex ? soup.colours[static_cast<std::size_t>(corner.colour)] : LinearRgb{1.0F, 1.0F, 1.0F});
+                }
             }
             facet.corners[k] = at->second;
         }

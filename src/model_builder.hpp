@@ -9,8 +9,8 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-// Indexed meshes from a model file's triangles, whose corners index positions, normals and
-// texture coordinates separately (as OBJ does), with normals made where the file has none.
+// Indexed meshes from a model file's triangles, whose corners index positions, normals,
+// texture coordinates and colours separately (as OBJ does), with normals made where the file has none.
 namespace raster::detail {
 
 inline constexpr std::int64_t kNoIndex = -1;
@@ -19,6 +19,7 @@ struct SoupCorner {
     std::int64_t position;
     std::int64_t normal = kNoIndex;
     std::int64_t uv = kNoIndex;
+    std::int64_t colour = kNoIndex;
 };
 
 // Corners clockwise seen from outside, in raster's world; every index valid or kNoIndex.
@@ -31,6 +32,7 @@ struct PolygonSoup {
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;
     std::vector<glm::vec2> uvs;
+    std::vector<LinearRgb> colours;  // in linear light
     std::vector<SoupTriangle> triangles;
 };
 

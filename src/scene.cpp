@@ -55,6 +55,14 @@ std::size_t draw_shaded(const SceneObject& object, std::span<const DirectionalLi
     const PhongMaterial& material = std::get<PhongMaterial>(object.material);
     const LinearLighting lighting(material, lights, points, to_eye, eye, darkening);
     const DiffuseSource diffuse{material.diffuse, object.texture.get(), object.sampler};
+    if (!object.mesh->colours.empty()) {  // the corners' colours interpolated to every pixel
+        switch (object.shading) {
+        case ShadingMethod::flat: return draw(TintedFlatShader{&lighting, diffuse});
+        case ShadingMethod::gouraud: return draw(TintedGouraudShader{&lighting, diffuse});
+        case ShadingMethod::unlit: return draw(TintedUnlitShader{diffuse});
+        default: return draw(TintedPhongShader{&lighting, diffuse});
+        }
+    }
     if (object.shading == ShadingMethod::unlit) return draw(UnlitShader{diffuse});
     if (object.texture) {  // the textured shaders read the texture at every pixel
         switch (object.shading) {

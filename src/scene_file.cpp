@@ -6,6 +6,7 @@
 #include "ply_header.hpp"
 #include "polygon_triangles.hpp"
 
+#include <raster/colour.hpp>
 #include <raster/input_file.hpp>
 #include <raster/texture_file.hpp>
 
@@ -120,10 +121,26 @@ PhongMaterial material_from(const aiMaterial& m) {
     return material;
 }
 
+// How a format writes vertex colours: glTF's COLOR_0 is linear; PLY and STL colours are the
+// bytes a screen shows, sRGB (doc/conventions.md#vertex-colours).
+enum class ColourSpace { linear, srgb };
+
+ColourSpace colour_space_of(std::string format) {
+    std::transform(format.begin(), format.end(), format.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (format.starts_with(".")) format.erase(0, 1);
+    return format == "ply" || format == "stl" ? ColourSpace::srgb : ColourSpace::linear;
+}
+
+// A file's colour channel in linear light: clamped to [0, 1], white where it is not a number.
+float linear_channel(float written, ColourSpace space) {
+    const float c = std::isfinite(written) ? std::clamp(written, 0.0F, 1.0F) : 1.0F;
+    return space == ColourSpace::srgb ? static_cast<float>(linear_from_srgb_channel(c)) : c;
+}
+
 class SceneReader {
 public:
-    SceneReader(const aiScene& scene, const std::filesystem::path& path, const ObjOptions& options, Model& model)
-        : scene_(scene), path_(path), name_(printable(path.string())), options_(options), model_(model) {}
+    SceneReader(const aiScene& scene, const std::filesystem::path& path, ColourSpace colours, const ObjOptions& options, Model& model)
+        : scene_(scene), path_(path), name_(printable(path.string())), colours_(colours), options_(options), model_(model) {}
 
     detail::PolygonSoup soup() {
         if (scene_.mRootNode == nullptr) throw std::runtime_error("it holds no scene");
@@ -161,9 +178,11 @@ private:
     void add_mesh(const aiMesh& mesh, const glm::dmat4& world) {
         const auto first = static_cast<std::int64_t>(soup_.positions.size());
         const bool has_normals = mesh.mNormals != nullptr, has_uvs = mesh.mTextureCoords[0] != nullptr;
-        // Normals and texture coordinates are kept one per position: meshes without them pad.
+        const bool has_colours = mesh.mColors[0] != nullptr;
+        // Normals, texture coordinates and colours are kept one per position: meshes without them pad.
         if (has_normals) soup_.normals.resize(soup_.positions.size(), glm::vec3(0.0F));
         if (has_uvs) soup_.uvs.resize(soup_.positions.size(), glm::vec2(0.0F));
+        if (has_colours) soup_.colours.resize(soup_.positions.size(), LinearRgb{1.0F, 1.0F, 1.0F});
         const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(glm::dmat3(world)));
         for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
             const aiVector3D& p = mesh.mVertices[v];
@@ -178,6 +197,10 @@ private:
             if (mesh.mTextureCoords[0] != nullptr) {
                 const aiVector3D& uv = mesh.mTextureCoords[0][v];
                 soup_.uvs.emplace_back(std::isfinite(uv.x) ? uv.x : 0.0F, std::isfinite(uv.y) ? uv.y : 0.0F);
+            }
+            if (has_colours) {  // alpha is not drawn: surfaces are opaque
+                const aiColor4D& c = mesh.mColors[0][v];
+                soup_.colours.push_back({linear_channel(c.r, colours_), linear_channel(c.g, colours_), linear_channel(c.b, colours_)});
             }
         }
         std::vector<glm::dvec3> outline;
@@ -194,7 +217,7 @@ private:
                     throw std::runtime_error("a face names vertex " + std::to_string(index) + " of a mesh of " + std::to_string(mesh.mNumVertices));
                 }
                 const std::int64_t at = first + index;
-                corners.push_back({at, has_normals ? at : detail::kNoIndex, has_uvs ? at : detail::kNoIndex});
+                corners.push_back({at, has_normals ? at : detail::kNoIndex, has_uvs ? at : detail::kNoIndex, has_colours ? at : detail::kNoIndex});
                 outline.emplace_back(soup_.positions[static_cast<std::size_t>(at)]);
             }
             for (const auto& [a, b, c] : detail::triangles_of_polygon(outline)) {
@@ -203,6 +226,7 @@ private:
         }
         if (!soup_.normals.empty()) soup_.normals.resize(soup_.positions.size(), glm::vec3(0.0F));
         if (!soup_.uvs.empty()) soup_.uvs.resize(soup_.positions.size(), glm::vec2(0.0F));
+        if (!soup_.colours.empty()) soup_.colours.resize(soup_.positions.size(), LinearRgb{1.0F, 1.0F, 1.0F});
     }
 
     std::shared_ptr<const Texture> map_of(const aiMaterial& m) {
@@ -234,6 +258,7 @@ private:
     const aiScene& scene_;
     std::filesystem::path path_;
     std::string name_;
+    ColourSpace colours_;
     const ObjOptions& options_;
     Model& model_;
     detail::PolygonSoup soup_;
@@ -242,10 +267,10 @@ private:
 };
 
 // The model of a scene assimp read; `path` places the files it names and `name` is for messages.
-void model_from_scene(const aiScene& scene, const std::filesystem::path& path, const std::string& name, const ObjOptions& options,
-                      Model& model) {
+void model_from_scene(const aiScene& scene, const std::filesystem::path& path, const std::string& name, ColourSpace colours,
+                      const ObjOptions& options, Model& model) {
     try {
-        SceneReader reader(scene, path, options, model);
+        SceneReader reader(scene, path, colours, options, model);
         detail::PolygonSoup soup = reader.soup();
         const auto materials = reader.materials();
         for (auto& [id, mesh] : detail::meshes_by_material(soup, options.crease_degrees)) {
@@ -290,7 +315,7 @@ Model read_scene_file(const std::filesystem::path& path, const ObjOptions& optio
         if (why.starts_with("'" + name + "' ")) throw std::runtime_error(name + ": " + files->first_reason());  // the model itself
         throw std::runtime_error(name + ": " + (why.empty() ? kUnreadable : why));
     }
-    model_from_scene(*scene, path, name, options, model);
+    model_from_scene(*scene, path, name, colour_space_of(extension), options, model);
     return model;
 }
 
@@ -307,7 +332,7 @@ Model parse_scene_file(std::span<const std::uint8_t> bytes, const std::string& f
     }
     const aiScene* scene = importer.ReadFileFromMemory(bytes.data(), bytes.size(), aiProcess_ValidateDataStructure, format.c_str());
     if (!readable(scene)) throw std::runtime_error(name + ": " + kUnreadable);
-    model_from_scene(*scene, "", name, no_files, model);
+    model_from_scene(*scene, "", name, colour_space_of(format), no_files, model);
     return model;
 }
 

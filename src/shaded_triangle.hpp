@@ -186,11 +186,22 @@ inline void check_drawable(const Framebuffer& colour, const DepthBuffer* depth_b
         throw std::invalid_argument("mesh has " + std::to_string(mesh.uvs.size()) + " texture coordinates for " +
                                     std::to_string(mesh.positions.size()) + " positions");
     }
+    if (!mesh.colours.empty() && mesh.colours.size() != mesh.positions.size()) {
+        throw std::invalid_argument("mesh has " + std::to_string(mesh.colours.size()) + " colours for " +
+                                    std::to_string(mesh.positions.size()) + " positions");
+    }
     for (const Facet& facet : mesh.facets) {
         for (const std::uint32_t corner : facet.corners) {
             if (corner >= mesh.positions.size()) throw std::invalid_argument("mesh facet names a missing vertex");
         }
     }
+}
+
+// What the vertex stage sees of corner k of a facet, at `position` with `normal`.
+inline Corner corner_of(const Mesh& mesh, const Facet& facet, std::size_t k, glm::vec3 position, glm::vec3 normal) {
+    const std::uint32_t i = facet.corners[k];
+    return {position, normal, mesh.uvs.empty() ? glm::vec2(0.0F) : mesh.uvs[i],
+            mesh.colours.empty() ? LinearRgb{1.0F, 1.0F, 1.0F} : mesh.colours[i]};
 }
 
 // The Varying of each corner of a facet, from the vertex stage's per-vertex results or, for
@@ -200,19 +211,18 @@ std::array<typename Shader::Varying, 3> facet_varyings(const Shader& shader, con
                                                        const std::vector<typename Shader::Varying>& per_vertex) {
     const std::array<glm::vec3, 3> at{mesh.positions[facet.corners[0]], mesh.positions[facet.corners[1]],
                                       mesh.positions[facet.corners[2]]};
-    const auto uv = [&](std::size_t k) { return mesh.uvs.empty() ? glm::vec2(0.0F) : mesh.uvs[facet.corners[k]]; };
-    if (Shader::kFacetNormal) {  // lit once per facet at its centroid; texture coordinates stay each corner's own
+    if (Shader::kFacetNormal) {  // lit once per facet at its centroid; texture coordinates and colours stay each corner's own
         const glm::vec3 centroid = at[0] / 3.0F + at[1] / 3.0F + at[2] / 3.0F;  // no overflow
-        if (mesh.uvs.empty()) {
+        if (mesh.uvs.empty() && mesh.colours.empty()) {
             const auto shared = shader.vertex({centroid, facet.normal});
             return {shared, shared, shared};
         }
-        return {shader.vertex({centroid, facet.normal, uv(0)}), shader.vertex({centroid, facet.normal, uv(1)}),
-                shader.vertex({centroid, facet.normal, uv(2)})};
+        return {shader.vertex(corner_of(mesh, facet, 0, centroid, facet.normal)), shader.vertex(corner_of(mesh, facet, 1, centroid, facet.normal)),
+                shader.vertex(corner_of(mesh, facet, 2, centroid, facet.normal))};
     }
     if (mesh.surface == Surface::faceted) {  // the facet's normal, each corner's own position
-        return {shader.vertex({at[0], facet.normal, uv(0)}), shader.vertex({at[1], facet.normal, uv(1)}),
-                shader.vertex({at[2], facet.normal, uv(2)})};
+        return {shader.vertex(corner_of(mesh, facet, 0, at[0], facet.normal)), shader.vertex(corner_of(mesh, facet, 1, at[1], facet.normal)),
+                shader.vertex(corner_of(mesh, facet, 2, at[2], facet.normal))};
     }
     return {per_vertex[facet.corners[0]], per_vertex[facet.corners[1]], per_vertex[facet.corners[2]]};
 }
@@ -220,7 +230,8 @@ std::array<typename Shader::Varying, 3> facet_varyings(const Shader& shader, con
 // The vertex stage's Varying of vertex i, for shaders that light per vertex or per pixel.
 template <typename Shader>
 typename Shader::Varying vertex_varying(const Shader& shader, const Mesh& mesh, std::size_t i) {
-    return shader.vertex({mesh.positions[i], mesh.normals[i], mesh.uvs.empty() ? glm::vec2(0.0F) : mesh.uvs[i]});
+    return shader.vertex({mesh.positions[i], mesh.normals[i], mesh.uvs.empty() ? glm::vec2(0.0F) : mesh.uvs[i],
+                          mesh.colours.empty() ? LinearRgb{1.0F, 1.0F, 1.0F} : mesh.colours[i]});
 }
 
 // Whether a triangle's corners leave every pixel centre of a band of rows above or below them,

@@ -9,8 +9,13 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdint>
 #include <filesystem>
+#include <set>
 #include <string>
+#include <tuple>
+#include <vector>
 
 using raster::Framebuffer;
 using raster::Model;
@@ -77,6 +82,56 @@ TEST(SceneFile, StlInAsciiAndBinaryAndPlyWithAQuadFaceDraw) {
     const Model pyramid = raster::read_model(dir / "pyramid.ply");
     EXPECT_EQ(raster::triangle_count(pyramid), 6U);  // the quad base in two
     EXPECT_TRUE(test_support::matches_snapshot(drawn(pyramid), "models/format-ply"));
+}
+
+TEST(SceneFile, PlyAndStlColoursAreSrgbAndGltfColoursLinear) {
+    const ScratchDir dir;
+    const auto colours_of = [](const Model& model) {
+        std::vector<raster::LinearRgb> all;
+        for (const auto& part : model.parts) all.insert(all.end(), part.mesh.colours.begin(), part.mesh.colours.end());
+        return all;
+    };
+    // PLY bytes are sRGB: 255 is 1, 0 is 0 (the pyramid's red, green, blue, yellow and white corners).
+    test_support::write_text(dir / "pyramid.ply", test_support::ply_pyramid());
+    const Model pyramid = raster::read_model(dir / "pyramid.ply");
+    ASSERT_EQ(colours_of(pyramid).size(), pyramid.parts[0].mesh.positions.size());
+    std::set<std::tuple<float, float, float>> seen;
+    for (const raster::LinearRgb& c : colours_of(pyramid)) seen.insert({c.r, c.g, c.b});
+    EXPECT_EQ(seen, (std::set<std::tuple<float, float, float>>{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}, {1, 1, 1}}));
+    // A mid grey byte in PLY is sRGB 128/255, linear 0.216.
+    test_support::write_text(dir / "grey.ply",
+                             "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                             "property uchar red\nproperty uchar green\nproperty uchar blue\nelement face 1\n"
+                             "property list uchar int vertex_indices\nend_header\n0 0 0 128 128 128\n1 0 0 128 128 128\n"
+                             "0 1 0 128 128 128\n3 0 1 2\n");
+    for (const raster::LinearRgb& c : colours_of(raster::read_model(dir / "grey.ply"))) {
+        EXPECT_NEAR(c.r, raster::linear_from_srgb_channel(128.0 / 255.0), 1e-5);
+    }
+    // glTF's COLOR_0 is linear already: 0.5 stays 0.5.
+    test_support::write_text(dir / "triangle.gltf", test_support::gltf_coloured_triangle(0.5F, 0.25F, 1.0F));
+    const std::vector<raster::LinearRgb> gltf = colours_of(raster::read_model(dir / "triangle.gltf"));
+    ASSERT_FALSE(gltf.empty());
+    for (const raster::LinearRgb& c : gltf) EXPECT_EQ(c, (raster::LinearRgb{0.5F, 0.25F, 1.0F}));
+    // Binary STL: a facet's 5-bit channels with bit 15 set, sRGB like PLY's; one facet full red,
+    // one at 16/31 of green, two without a colour, which take assimp's default grey 0.6.
+    const auto visible = [](unsigned r, unsigned g, unsigned b) { return static_cast<std::uint16_t>(0x8000U | r << 10U | g << 5U | b); };
+    test_support::write_text(dir / "coloured.stl", test_support::stl_tetrahedron_binary({visible(31, 0, 0), visible(0, 16, 0), 0, 0}));
+    std::set<std::tuple<int, int, int>> stl;  // in thousandths
+    for (const raster::LinearRgb& c : colours_of(raster::read_model(dir / "coloured.stl"))) {
+        stl.insert({std::lround(c.r * 1000), std::lround(c.g * 1000), std::lround(c.b * 1000)});
+    }
+    const auto grey = static_cast<int>(std::lround(raster::linear_from_srgb_channel(0.6) * 1000));
+    const auto green = static_cast<int>(std::lround(raster::linear_from_srgb_channel(16.0 / 31.0) * 1000));
+    EXPECT_EQ(stl, (std::set<std::tuple<int, int, int>>{{1000, 0, 0}, {0, green, 0}, {grey, grey, grey}}));
+    // An STL without colours has none, and draws its material as before.
+    test_support::write_text(dir / "plain.stl", test_support::stl_tetrahedron_binary());
+    EXPECT_TRUE(colours_of(raster::read_model(dir / "plain.stl")).empty());
+    // assimp-testmodels' float-color.ply: one triangle of float colours, pure blue.
+    if (std::filesystem::exists(kTestModels / "PLY/float-color.ply")) {
+        for (const raster::LinearRgb& c : colours_of(raster::read_model(kTestModels / "PLY/float-color.ply"))) {
+            EXPECT_EQ(c, (raster::LinearRgb{0, 0, 1}));
+        }
+    }
 }
 
 TEST(SceneFile, EveryFileItOpensIsAnInputNoOutputMayReplace) {

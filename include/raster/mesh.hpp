@@ -1,5 +1,7 @@
 #pragma once
 
+#include <raster/colour.hpp>
+
 #include <array>
 #include <cmath>
 #include <limits>
@@ -24,7 +26,7 @@ struct Facet {
 enum class Surface { smooth, faceted };
 
 // An indexed triangle mesh: shared vertex positions with one normal each (and one texture
-// coordinate each, or none at all), and facets.
+// coordinate and one colour each, or none at all), and facets.
 struct Mesh {
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;
@@ -34,6 +36,9 @@ struct Mesh {
     // (doc/conventions.md#depth).
     bool convex = false;
     std::vector<glm::vec2> uvs{};  // empty, or one per position (doc/conventions.md#textures)
+    // Empty, or one per position, multiplying a Phase 2 material's diffuse colour
+    // (doc/conventions.md#vertex-colours).
+    std::vector<LinearRgb> colours{};
 };
 
 // The unit vector along v, or zero when v has no usable direction (zero, NaN, infinite).

@@ -14,11 +14,13 @@
 // normal (and its centroid as the position) at every corner instead of the vertex attributes.
 namespace raster {
 
-// What the vertex stage sees of one corner, in world space, with its texture coordinate.
+// What the vertex stage sees of one corner, in world space, with its texture coordinate and
+// its colour (white for a mesh without vertex colours).
 struct Corner {
     glm::vec3 position;
     glm::vec3 normal;
     glm::vec2 uv{0.0F};
+    LinearRgb colour{1.0F, 1.0F, 1.0F};
 };
 
 // Lights the corners and interpolates the intensity; with the facet normal at every corner

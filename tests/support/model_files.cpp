@@ -195,15 +195,31 @@ std::string stl_tetrahedron_ascii() {
     return stl + "endsolid tetrahedron\n";
 }
 
-std::string stl_tetrahedron_binary() {
+std::string gltf_coloured_triangle(float red, float green, float blue) {
+    std::string buffer;
+    for (const float v : {-1.0F, -1.0F, 0.0F, 1.0F, -1.0F, 0.0F, 0.0F, 1.0F, 0.0F}) append_raw(buffer, v);
+    for (int corner = 0; corner < 3; ++corner) {
+        for (const float v : {red, green, blue}) append_raw(buffer, v);
+    }
+    return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "COLOR_0": 1}}]}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [-1, -1, 0], "max": [1, 1, 0]},
+                {"bufferView": 1, "componentType": 5126, "count": 3, "type": "VEC3"}],
+  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 36}],
+  "buffers": [{"byteLength": 72, "uri": "data:application/octet-stream;base64,)" +
+           base64(buffer) + "\"}]}\n";
+}
+
+std::string stl_tetrahedron_binary(std::array<std::uint16_t, 4> attributes) {
     std::string stl(80, ' ');
     append_raw(stl, std::uint32_t{4});
+    std::size_t face = 0;
     for (const auto& facet : kTetrahedron) {
         for (int k = 0; k < 3; ++k) append_raw(stl, 0.0F);  // no normal: made from the corners
         for (const auto& p : facet) {
             for (const float v : p) append_raw(stl, v);
         }
-        append_raw(stl, std::uint16_t{0});
+        append_raw(stl, attributes[face++]);
     }
     return stl;
 }

@@ -2,6 +2,8 @@
 
 #include <raster/framebuffer.hpp>
 
+#include <array>
+#include <cstdint>
 #include <filesystem>
 #include <string>
 
@@ -32,9 +34,13 @@ std::filesystem::path write_crate_on_floor(const std::filesystem::path& folder);
 // parent, the second turned 45 degrees about z, halved and moved right; base colour
 // (0.8, 0.2, 0.1), metallic 0, roughness 0.5.
 std::string gltf_two_squares();
-// A tetrahedron with one corner at the origin, as ASCII and as binary STL (the same facets).
+// A glTF 2.0 triangle whose three corners have the linear COLOR_0 `colour`, no material.
+std::string gltf_coloured_triangle(float red, float green, float blue);
+// A tetrahedron with one corner at the origin, as ASCII and as binary STL (the same facets);
+// the binary one's facets carry `attributes`, where bit 15 marks a colour of 5-bit channels,
+// red in bits 10-14 (VisCAM and SolidView's convention).
 std::string stl_tetrahedron_ascii();
-std::string stl_tetrahedron_binary();
+std::string stl_tetrahedron_binary(std::array<std::uint16_t, 4> attributes = {});
 // A square pyramid in ASCII PLY: four triangles and a quad base, with per-vertex colours.
 std::string ply_pyramid();
 
