@@ -1,9 +1,9 @@
 #pragma once
 
-#include <raster/output_file.hpp>
-#include <raster/scene.hpp>
-#include <raster/scenes.hpp>
-#include <raster/webp.hpp>
+#include <raster/io/output_file.hpp>
+#include <raster/render/scene.hpp>
+#include <raster/scenes/scenes.hpp>
+#include <raster/io/webp.hpp>
 
 #include <CLI/CLI.hpp>
 #include <cstdint>

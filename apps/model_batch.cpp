@@ -1,6 +1,6 @@
 #include "model_batch.hpp"
 
-#include <raster/input_file.hpp>
+#include <raster/io/input_file.hpp>
 
 #include <map>
 #include <stdexcept>

@@ -1,10 +1,10 @@
 #include "exporter.hpp"
 #include "model_batch.hpp"
 
-#include <raster/model_scene.hpp>
-#include <raster/model_file.hpp>
-#include <raster/obj_file.hpp>
-#include <raster/texture_file.hpp>
+#include <raster/render/model_scene.hpp>
+#include <raster/io/model_file.hpp>
+#include <raster/io/obj_file.hpp>
+#include <raster/io/texture_file.hpp>
 
 #include <algorithm>
 #include <cctype>

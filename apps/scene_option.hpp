@@ -1,8 +1,8 @@
 #pragma once
 
-#include <raster/auto_detail.hpp>
-#include <raster/diary_scenes.hpp>
-#include <raster/seed_scenes.hpp>
+#include <raster/geometry/auto_detail.hpp>
+#include <raster/scenes/diary_scenes.hpp>
+#include <raster/scenes/seed_scenes.hpp>
 
 #include <CLI/CLI.hpp>
 #include <string>

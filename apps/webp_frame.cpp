@@ -1,6 +1,6 @@
 #include "exporter.hpp"
 
-#include <raster/png.hpp>
+#include <raster/io/png.hpp>
 
 #include <algorithm>
 

@@ -7,13 +7,13 @@
 // textured knot lit per pixel, which GL draws with a GLSL program doing the same sums. Both sides
 // get the same matrices: GL's projection is raster's with its depth mapped to -1..1
 // (doc/conventions.md#perspective).
-#include <raster/perspective_camera.hpp>
-#include <raster/scene.hpp>
-#include <raster/seed_scenes.hpp>
-#include <raster/webp.hpp>
-#include <raster/shapes.hpp>
+#include <raster/camera/perspective_camera.hpp>
+#include <raster/render/scene.hpp>
+#include <raster/scenes/seed_scenes.hpp>
+#include <raster/io/webp.hpp>
+#include <raster/geometry/shapes.hpp>
 
-#include "clipped_facets.hpp"
+#include "camera/clipped_facets.hpp"
 
 #include <CLI/CLI.hpp>
 #define GL_GLEXT_PROTOTYPES 1  // OSMesa exports the GL 2 entry points the GLSL path calls

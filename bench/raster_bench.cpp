@@ -2,9 +2,9 @@
 // 0.0.17 torus tumble, 360 frames rendered in memory and not encoded, at five mesh details and
 // five image sizes. Prints both tables with the original's published numbers beside ours, and a
 // third of ours: every torus scene at its own detail, Phase 1 against Phase 2's linear light.
-#include <raster/diary_scenes.hpp>
-#include <raster/seed_scenes.hpp>
-#include <raster/shapes.hpp>
+#include <raster/scenes/diary_scenes.hpp>
+#include <raster/scenes/seed_scenes.hpp>
+#include <raster/geometry/shapes.hpp>
 #include "exporter.hpp"
 
 #include <algorithm>

@@ -1,7 +1,7 @@
 # What `cmake --install` puts in place for consumers: the library, headers and exporters, the
 # CMake package, a pkg-config file and the licence.
 include(CMakePackageConfigHelpers)
-install(TARGETS raster EXPORT raster-targets
+install(TARGETS raster raster_scenes EXPORT raster-targets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/raster ${PROJECT_BINARY_DIR}/src/generated/raster
@@ -38,7 +38,8 @@ else()
   set(RASTER_PC_REQUIRES_PRIVATE "")
 endif()
 configure_file(${CMAKE_CURRENT_LIST_DIR}/raster.pc.in ${PROJECT_BINARY_DIR}/raster.pc @ONLY)
-install(FILES ${PROJECT_BINARY_DIR}/raster.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
+configure_file(${CMAKE_CURRENT_LIST_DIR}/raster-scenes.pc.in ${PROJECT_BINARY_DIR}/raster-scenes.pc @ONLY)
+install(FILES ${PROJECT_BINARY_DIR}/raster.pc ${PROJECT_BINARY_DIR}/raster-scenes.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
 
 install(FILES ${PROJECT_SOURCE_DIR}/LICENSE ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/CHANGELOG.md
   DESTINATION ${CMAKE_INSTALL_DATAROOTDIR}/doc/raster)

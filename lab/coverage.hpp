@@ -1,6 +1,6 @@
 #pragma once
 
-#include <raster/fill.hpp>
+#include <raster/rasterize/fill.hpp>
 
 #include <cstdint>
 #include <vector>

@@ -1,9 +1,9 @@
 #include "scene_lab.hpp"
 
-#include "shaded_triangle.hpp"
+#include "rasterize/shaded_triangle.hpp"
 
-#include <raster/shaders.hpp>
-#include <raster/shapes.hpp>
+#include <raster/shade/shaders.hpp>
+#include <raster/geometry/shapes.hpp>
 
 #include <algorithm>
 #include <chrono>

@@ -1,6 +1,6 @@
 #include "fill_kernels.hpp"
 
-#include <raster/subpixel.hpp>
+#include <raster/rasterize/subpixel.hpp>
 
 #include <array>
 

@@ -4,8 +4,8 @@
 // Writes encode.csv and encode-summary.md; lab/encode_chart.gp draws encode.svg.
 #include "lab_args.hpp"
 
-#include <raster/scenes.hpp>
-#include <raster/webp.hpp>
+#include <raster/scenes/scenes.hpp>
+#include <raster/io/webp.hpp>
 
 #include <algorithm>
 #include <chrono>

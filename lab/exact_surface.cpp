@@ -1,6 +1,6 @@
 #include "exact_surface.hpp"
 
-#include <raster/analytic_shape.hpp>
+#include <raster/geometry/analytic_shape.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -1,9 +1,9 @@
 #pragma once
 
-#include <raster/framebuffer.hpp>
-#include <raster/lighting.hpp>
-#include <raster/ortho_camera.hpp>
-#include <raster/shapes.hpp>
+#include <raster/rasterize/framebuffer.hpp>
+#include <raster/shade/lighting.hpp>
+#include <raster/camera/ortho_camera.hpp>
+#include <raster/geometry/shapes.hpp>
 
 #include <cstdint>
 #include <span>

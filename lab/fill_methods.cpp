@@ -2,8 +2,8 @@
 
 #include "fill_kernels.hpp"
 
-#include <raster/fill.hpp>
-#include <raster/subpixel.hpp>
+#include <raster/rasterize/fill.hpp>
+#include <raster/rasterize/subpixel.hpp>
 
 #include <array>
 

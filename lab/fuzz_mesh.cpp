@@ -2,8 +2,8 @@
 // directional and point lights through the whole mesh pipeline, orthographic or in perspective
 // (vertex stage, clipping, culling, fill, interpolation, depth, every shader). It must never
 // crash or write outside its buffers (the sanitizers watch), and its invariants must hold.
-#include <raster/draw_mesh.hpp>
-#include <raster/scene.hpp>
+#include <raster/rasterize/draw_mesh.hpp>
+#include <raster/render/scene.hpp>
 
 #include <cmath>
 #include <cstdint>

@@ -1,9 +1,9 @@
 // libFuzzer target: the model and texture loading path. Bytes become OBJ and MTL text (read by
 // parse_obj, then framed and drawn) or an image (decoded, then sampled with every filter). Bad
 // input may only ever be a std::runtime_error; nothing may crash, hang or overrun a buffer.
-#include <raster/model_scene.hpp>
-#include <raster/obj_file.hpp>
-#include <raster/texture_file.hpp>
+#include <raster/render/model_scene.hpp>
+#include <raster/io/obj_file.hpp>
+#include <raster/io/texture_file.hpp>
 
 #include <cmath>
 #include <cstdint>

@@ -3,8 +3,8 @@
 #include "coverage.hpp"
 #include "reference.hpp"
 
-#include <raster/fill.hpp>
-#include <raster/line.hpp>
+#include <raster/rasterize/fill.hpp>
+#include <raster/rasterize/line.hpp>
 
 #include <cstdint>
 #include <cstdlib>

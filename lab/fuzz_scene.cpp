@@ -2,8 +2,8 @@
 // drawn. The first byte picks the format; bad input may only ever be a std::runtime_error.
 // Run with -detect_leaks=0: assimp 5.2.5 itself leaks on some malformed STL files, and after
 // minutes of fuzzing frees memory it never allocated; CI replays the seeds only.
-#include <raster/model_file.hpp>
-#include <raster/model_scene.hpp>
+#include <raster/io/model_file.hpp>
+#include <raster/render/model_scene.hpp>
 
 #include <array>
 #include <cstdint>

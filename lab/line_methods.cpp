@@ -1,6 +1,6 @@
 #include "line_methods.hpp"
 
-#include <raster/line.hpp>
+#include <raster/rasterize/line.hpp>
 
 #include <array>
 #include <cmath>

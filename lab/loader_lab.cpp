@@ -6,11 +6,11 @@
 // Writes loaders.csv and loaders-summary.md; lab/loader_chart.gp draws loaders.svg.
 #include "lab_args.hpp"
 
-#include "image_header.hpp"
+#include "io/image_header.hpp"
 
-#include <raster/mesh.hpp>
-#include <raster/model.hpp>
-#include <raster/model_file.hpp>
+#include <raster/geometry/mesh.hpp>
+#include <raster/geometry/model.hpp>
+#include <raster/io/model_file.hpp>
 
 #include <algorithm>
 #include <array>
@@ -205,7 +205,7 @@ void walk_assimp(const aiScene& scene, const aiNode& node, const glm::dmat4& par
 
 Reading by_assimp(const fs::path& path) {
     Assimp::Importer importer;
-    // The product's flags (src/scene_file.cpp): validation only, no triangulation or merging.
+    // The product's flags (src/io/scene_file.cpp): validation only, no triangulation or merging.
     const aiScene* scene = importer.ReadFile(path.string(), aiProcess_ValidateDataStructure);
     if (scene == nullptr || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0) throw std::runtime_error(importer.GetErrorString());
     if (scene->mRootNode == nullptr) throw WalkError("no root node");

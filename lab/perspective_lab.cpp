@@ -6,12 +6,12 @@
 // Writes perspective-*.csv and perspective-summary.md; lab/perspective_charts.gp draws the charts.
 #include "lab_args.hpp"
 
-#include "clipped_facets.hpp"
+#include "camera/clipped_facets.hpp"
 #include "recording_shader.hpp"
 
-#include <raster/diary_scenes.hpp>
-#include <raster/scene.hpp>
-#include <raster/shapes.hpp>
+#include <raster/scenes/diary_scenes.hpp>
+#include <raster/render/scene.hpp>
+#include <raster/geometry/shapes.hpp>
 
 #include <algorithm>
 #include <chrono>

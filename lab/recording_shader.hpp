@@ -1,7 +1,7 @@
 #pragma once
 
-#include <raster/framebuffer.hpp>
-#include <raster/shaders.hpp>
+#include <raster/rasterize/framebuffer.hpp>
+#include <raster/shade/shaders.hpp>
 
 #include <cstdint>
 #include <vector>

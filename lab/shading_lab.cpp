@@ -1,9 +1,9 @@
 #include "exact_surface.hpp"
 #include "scene_lab.hpp"
 
-#include <raster/analytic_shape.hpp>
-#include <raster/auto_detail.hpp>
-#include <raster/diary_scenes.hpp>
+#include <raster/geometry/analytic_shape.hpp>
+#include <raster/geometry/auto_detail.hpp>
+#include <raster/scenes/diary_scenes.hpp>
 
 #include <algorithm>
 #include <chrono>

@@ -2,9 +2,9 @@
 
 #include "corpus.hpp"
 
-#include <raster/cube.hpp>
-#include <raster/draw_cube.hpp>
-#include <raster/scenes.hpp>
+#include <raster/geometry/cube.hpp>
+#include <raster/rasterize/draw_cube.hpp>
+#include <raster/scenes/scenes.hpp>
 
 #include <benchmark/benchmark.h>
 #include <map>

@@ -3,10 +3,10 @@
 // Writes texture-filtering.csv and texture-summary.md; lab/texture_chart.gp draws the chart.
 #include "lab_args.hpp"
 
-#include "clipped_facets.hpp"
+#include "camera/clipped_facets.hpp"
 
-#include <raster/texture.hpp>
-#include <raster/textured_shaders.hpp>
+#include <raster/shade/texture.hpp>
+#include <raster/shade/textured_shaders.hpp>
 
 #include <algorithm>
 #include <chrono>

@@ -1,6 +1,6 @@
 #include "golden.hpp"
 
-#include <raster/webp.hpp>
+#include <raster/io/webp.hpp>
 
 #include <cstdlib>
 #include <filesystem>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include <raster/framebuffer.hpp>
+#include <raster/rasterize/framebuffer.hpp>
 
 #include <gtest/gtest.h>
 #include <map>

@@ -1,7 +1,7 @@
 // A downstream program: renders the still cube with the installed library and writes it as WebP.
-#include <raster/scenes.hpp>
+#include <raster/scenes/scenes.hpp>
 #include <raster/version.hpp>
-#include <raster/webp.hpp>
+#include <raster/io/webp.hpp>
 
 #include <iostream>
 

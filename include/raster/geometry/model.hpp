@@ -1,0 +1,57 @@
+#pragma once
+
+#include <raster/io/input_file.hpp>
+#include <raster/shade/linear_lighting.hpp>
+#include <raster/geometry/mesh.hpp>
+#include <raster/shade/texture.hpp>
+
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+#include <glm/vec3.hpp>
+
+// A model read from a file: one mesh per material, in raster's world (doc/conventions.md#models).
+namespace raster {
+
+struct ModelPart {
+    std::string material_name;  // empty for the default material
+    Mesh mesh;
+    PhongMaterial material;
+    std::shared_ptr<const Texture> texture{};  // the diffuse map, when it loaded
+    Sampler sampler{};
+};
+
+struct Model {
+    std::vector<ModelPart> parts;
+    // What was read but not used as the file asked, one line each, naming the file.
+    std::vector<std::string> warnings;
+    // Every file read to make it: the model, its material libraries and textures.
+    std::vector<InputRecord> sources;
+};
+
+// The material of a model file without one: a light grey, no highlight (Blender's default diffuse).
+[[nodiscard]] PhongMaterial default_model_material() noexcept;
+
+[[nodiscard]] std::size_t triangle_count(const Model& model) noexcept;
+
+// For each part, whether it is open: some edge of it is not met as often running one way as the
+// other, over the whole model (positions compared exactly, so a closed surface may be split
+// into parts). Only a closed part's back faces may be culled unseen.
+[[nodiscard]] std::vector<bool> open_parts(const Model& model);
+// The mesh with each facet also turned to face the other way, its corners' normals flipped:
+// an open surface (a leaf, a plane, a lone triangle) drawn and lit from both sides.
+[[nodiscard]] Mesh both_sides(const Mesh& mesh);
+
+// The smallest axis-aligned box around every vertex the facets use, and the smallest sphere
+// about the box's centre that holds them all.
+struct Bounds {
+    glm::dvec3 low;
+    glm::dvec3 high;
+    double radius;
+    [[nodiscard]] glm::dvec3 centre() const noexcept { return (low + high) * 0.5; }
+};
+// Throws std::invalid_argument for a model with no facets.
+[[nodiscard]] Bounds bounds_of(const Model& model);
+
+}  // namespace raster

@@ -1,0 +1,30 @@
+#pragma once
+
+#include <raster/geometry/model.hpp>
+#include <raster/io/obj_file.hpp>
+
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <string>
+
+// Models of every format `render` reads, chosen by the file name's ending
+// (doc/conventions.md#models).
+namespace raster {
+
+// glTF 2.0 (.gltf with its buffers and images, .glb), STL and PLY through the Open Asset Import
+// Library: every node's meshes placed by the node's matrices, base colour and its texture (sRGB)
+// as the diffuse colour and map, metallic-roughness as a Phong highlight, normals and texture
+// coordinates where the file has them. Every file it opens goes through InputFile. Throws
+// std::runtime_error with one line naming the file for a file it cannot use.
+[[nodiscard]] Model read_scene_file(const std::filesystem::path& path, const ObjOptions& options = {});
+
+// The same from bytes in memory, `format` naming the kind ("gltf", "glb", "stl", "ply"); no other
+// file is opened and no map loaded. For tests and fuzzing.
+[[nodiscard]] Model parse_scene_file(std::span<const std::uint8_t> bytes, const std::string& format, const ObjOptions& options = {});
+
+// read_obj for .obj (any letter case), read_scene_file for .gltf, .glb, .stl and .ply; any other
+// ending is refused with the list of those it reads.
+[[nodiscard]] Model read_model(const std::filesystem::path& path, const ObjOptions& options = {});
+
+}  // namespace raster

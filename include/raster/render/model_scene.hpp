@@ -1,0 +1,72 @@
+#pragma once
+
+#include <raster/rasterize/depth_buffer.hpp>
+#include <raster/rasterize/framebuffer.hpp>
+#include <raster/geometry/model.hpp>
+#include <raster/render/scene.hpp>
+
+#include <memory>
+#include <optional>
+#include <glm/vec3.hpp>
+
+// A model file's contents in front of a camera: what `render` draws (doc/conventions.md#models).
+namespace raster {
+
+// Which faces are drawn: a closed model's back faces never show, so `automatic` culls them only
+// then and draws an open model (a leaf, a plane, a scan) from both sides, lit on each.
+enum class Culling { automatic, back, none };
+
+// How to look at a model. Points and directions are in the model file's own coordinates
+// (right-handed, as OBJ is); what is left out is chosen from the model's bounding sphere.
+struct ModelView {
+    std::optional<glm::dvec3> eye;     // default: a three-quarter view from the front, right and above
+    std::optional<glm::dvec3> target;  // default: the centre of the bounding box
+    glm::dvec3 up{0.0, 1.0, 0.0};
+    double fov_degrees = 40.0;  // vertical; the sphere fills the narrower side of the view
+    bool orthographic = false;  // then the sphere fills the shorter side, whatever the field of view
+    std::optional<double> near;  // model units; default just short of the sphere
+    std::optional<double> far;   // default just beyond it
+    std::optional<glm::dvec3> light;  // toward the key light; default from over the viewer's left shoulder
+    ShadingMethod shading = ShadingMethod::phong;
+    Rgb background{48, 52, 60};
+    // The background is to be left transparent: depth is kept for every model, so that the
+    // pixels drawn can be read afterwards (DepthBuffer::coverage, Renderer::depth).
+    bool transparent = false;
+    Culling cull = Culling::automatic;
+};
+
+// A model placed for viewing, frame after frame.
+class ModelStage {
+public:
+    // Throws std::invalid_argument for a view it cannot take (the eye on the target or looking
+    // along `up`, a lens out of range, non-finite numbers) or a model too large to frame.
+    ModelStage(std::shared_ptr<const Model> model, const ModelView& view, int width, int height);
+
+    // Draws the model turned by `turn` radians about the up axis through the target: a
+    // turntable's frame. Returns the facets drawn.
+    std::size_t render(Framebuffer& frame, DepthBuffer& depth, double turn = 0.0, RenderOptions options = {}) const;
+    // The same with a renderer's threads and depth buffer, kept from frame to frame.
+    std::size_t render(Framebuffer& frame, Renderer& renderer, double turn = 0.0) const;
+
+private:
+    [[nodiscard]] std::vector<SceneObject> objects(double turn) const;
+    template <typename Draw>
+    std::size_t posed_scene(double turn, Draw draw) const;
+
+    std::shared_ptr<const Model> model_;
+    std::vector<std::shared_ptr<const Mesh>> meshes_;
+    ShadingMethod shading_;
+    // The camera and lights, one of the two; objects are added per frame.
+    std::optional<PerspectiveScene> perspective_;
+    std::optional<Scene> orthographic_;
+    glm::dvec3 target_;     // in the unit sphere's coordinates
+    glm::dvec3 up_;
+};
+
+// Gives every part that has texture coordinates `texture` as its diffuse map (a part with the
+// default material takes white as its colour, so the map shows as it is); returns a warning for
+// each part left without (empty when none).
+std::vector<std::string> replace_diffuse_maps(Model& model, const std::shared_ptr<const Texture>& texture,
+                                              const std::string& texture_name);
+
+}  // namespace raster

@@ -1,0 +1,117 @@
+#pragma once
+
+#include <raster/rasterize/depth_buffer.hpp>
+#include <raster/rasterize/framebuffer.hpp>
+#include <raster/shade/lighting.hpp>
+#include <raster/shade/linear_lighting.hpp>
+#include <raster/geometry/mesh.hpp>
+#include <raster/camera/ortho_camera.hpp>
+#include <raster/camera/perspective_camera.hpp>
+#include <raster/geometry/shapes.hpp>
+#include <raster/shade/texture.hpp>
+
+#include <memory>
+#include <optional>
+#include <span>
+#include <variant>
+#include <vector>
+#include <glm/mat4x4.hpp>
+
+namespace raster {
+
+// How an object's colour is computed: per facet, per vertex, or per pixel; or with no light at
+// all, its diffuse colour (or texture) as it is.
+enum class ShadingMethod { flat, gouraud, phong, unlit };
+
+// How a surface takes light: the diary's Phase 1 intensity on 8-bit colour, or Phase 2's
+// material colours in linear light (doc/conventions.md#light).
+using SurfaceMaterial = std::variant<Material, PhongMaterial>;
+
+// A mesh placed in the world with its surface; one without a mesh draws nothing.
+struct SceneObject {
+    std::shared_ptr<const Mesh> mesh;
+    glm::mat4 model{1.0F};
+    SurfaceMaterial material;
+    ShadingMethod shading = ShadingMethod::phong;
+    // The true surface the mesh approximates, if any, so its detail can be chosen (auto_detail.hpp).
+    std::optional<ShapeKind> shape{};
+    // A diffuse texture over the mesh's texture coordinates, multiplying a Phase 2 material's
+    // diffuse colour; Phase 1 materials ignore it.
+    std::shared_ptr<const Texture> texture{};
+    Sampler sampler{};
+};
+
+// Everything one frame shows, seen through an orthographic or a perspective camera.
+template <typename Camera>
+struct BasicScene {
+    Camera camera;
+    Rgb background{0, 0, 0};
+    std::vector<DirectionalLight> lights;
+    // Point lights light Phase 2 materials only; the Phase 1 model knew directional light alone.
+    std::vector<PointLight> point_lights;
+    std::vector<SceneObject> objects;
+    // Light dimmed with view depth (Phase 2 materials in perspective only), as raster-engine does.
+    std::optional<DepthDarkening> darkening{};
+    // Depth kept even where the scene needs none, so that the caller can read what was drawn
+    // (DepthBuffer::coverage) for a transparent background.
+    bool keep_depth = false;
+};
+using Scene = BasicScene<OrthoCamera>;
+using PerspectiveScene = BasicScene<PerspectiveCamera>;
+
+// Whether the scene can hide one surface behind another once back faces are culled: more than
+// one object, or a mesh that is not convex (doc/conventions.md#depth).
+[[nodiscard]] bool needs_depth(std::span<const SceneObject> objects) noexcept;
+template <typename Camera>
+[[nodiscard]] bool needs_depth(const BasicScene<Camera>& scene) noexcept {
+    return scene.keep_depth || needs_depth(std::span<const SceneObject>(scene.objects));
+}
+
+// How a frame is drawn: on how many threads, sharing its vertices, facets and strips of rows.
+// The picture is the same, bit for bit, whatever the count (doc/conventions.md#threads).
+struct RenderOptions {
+    int threads = 1;  // 0: one per core; counts above kMaxThreads are taken as kMaxThreads
+};
+inline constexpr int kMaxThreads = 256;
+
+namespace detail {
+class WorkerTeam;
+}
+
+// Clears to the background and draws every object; `depth` is prepared and used only when the
+// scene needs it, so a lone convex mesh never touches it. Returns the facets drawn.
+std::size_t render(Framebuffer& framebuffer, const Scene& scene, DepthBuffer& depth, RenderOptions options = {});
+// The same in perspective: triangles are clipped to the near and far planes (and a guard band),
+// attributes interpolated through 1/w, and the viewer's direction taken at each point
+// (doc/conventions.md#perspective). The camera must have the framebuffer's size.
+std::size_t render(Framebuffer& framebuffer, const PerspectiveScene& scene, DepthBuffer& depth, RenderOptions options = {});
+
+// What a run of frames keeps from one to the next: its threads, started once rather than for
+// every frame, and its depth buffer. Draws exactly what render() draws; one frame at a time.
+class Renderer {
+public:
+    // Throws std::invalid_argument for a negative thread count.
+    explicit Renderer(RenderOptions options = {});
+    ~Renderer();
+    Renderer(Renderer&&) noexcept;
+    Renderer& operator=(Renderer&&) noexcept;
+
+    std::size_t render(Framebuffer& framebuffer, const Scene& scene);
+    std::size_t render(Framebuffer& framebuffer, const PerspectiveScene& scene);
+    [[nodiscard]] int threads() const noexcept;
+    // The depth of the last frame drawn, for a scene that needed depth.
+    [[nodiscard]] const DepthBuffer& depth() const noexcept { return depth_; }
+
+private:
+    std::unique_ptr<detail::WorkerTeam> team_;
+    DepthBuffer depth_;
+};
+
+// The scene through a pinhole of vertical field of view `fov_degrees` (0 < fov < 180): the eye
+// moves back along its line of sight until the plane through the world origin keeps the
+// orthographic framing, so a small field of view looks like the orthographic picture and a
+// wide one is seen from close by. Near and far are 1/100 of that distance and 100 beyond it.
+// Throws std::invalid_argument for a field of view out of range or an eye too far out to move.
+[[nodiscard]] PerspectiveScene in_perspective(const Scene& scene, int width, int height, double fov_degrees);
+
+}  // namespace raster

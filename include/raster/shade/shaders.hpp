@@ -1,0 +1,84 @@
+#pragma once
+
+#include <raster/shade/colour.hpp>
+#include <raster/shade/lighting.hpp>
+#include <raster/shade/linear_lighting.hpp>
+#include <raster/geometry/mesh.hpp>
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+// A shader is two stages around the one rasterizer (doc/conventions.md#shading): vertex() turns
+// a corner into a Varying, which the rasterizer interpolates linearly across the triangle, and
+// pixel() turns the interpolated Varying into a colour. kFacetNormal asks for the facet's
+// normal (and its centroid as the position) at every corner instead of the vertex attributes.
+namespace raster {
+
+// What the vertex stage sees of one corner, in world space, with its texture coordinate and
+// its colour (white for a mesh without vertex colours).
+struct Corner {
+    glm::vec3 position;
+    glm::vec3 normal;
+    glm::vec2 uv{0.0F};
+    LinearRgb colour{1.0F, 1.0F, 1.0F};
+};
+
+// Lights the corners and interpolates the intensity; with the facet normal at every corner
+// that is one intensity per facet.
+template <bool FacetNormal>
+struct IntensityShader {
+    using Varying = float;
+    static constexpr bool kFacetNormal = FacetNormal;
+    const Lighting* lighting;
+
+    [[nodiscard]] Varying vertex(const Corner& corner) const noexcept { return lighting->intensity(corner.normal); }
+    [[nodiscard]] Rgb pixel(Varying intensity) const noexcept { return scaled_colour(lighting->material.base, intensity); }
+};
+
+// One intensity per facet from its normal: 0.0.8 to 0.0.11.
+using FlatShader = IntensityShader<true>;
+// Intensity at the corners, interpolated across the facet: 0.0.12 and 0.0.13.
+using GouraudShader = IntensityShader<false>;
+
+// Normals interpolated and renormalised, lit at every pixel: 0.0.15 onward.
+struct PhongShader {
+    using Varying = glm::vec3;
+    static constexpr bool kFacetNormal = false;
+    const Lighting* lighting;
+
+    [[nodiscard]] Varying vertex(const Corner& corner) const noexcept { return corner.normal; }
+    [[nodiscard]] Rgb pixel(const Varying& normal) const noexcept {
+        return scaled_colour(lighting->material.base, lighting->intensity(unit_or_zero(normal)));
+    }
+};
+
+// The same three in linear light (Phase 2): colours summed in linear light and encoded to sRGB
+// at the pixel write.
+template <bool FacetNormal>
+struct LinearColourShader {
+    using Varying = LinearRgb;
+    static constexpr bool kFacetNormal = FacetNormal;
+    const LinearLighting* lighting;
+
+    [[nodiscard]] Varying vertex(const Corner& corner) const noexcept { return lighting->shade(corner.position, corner.normal); }
+    [[nodiscard]] Rgb pixel(const Varying& colour) const noexcept { return srgb_from_linear(colour); }
+};
+
+using LinearFlatShader = LinearColourShader<true>;
+// Lights the corners and interpolates their colours: the original's 0.1.7 GouraudShader.
+using LinearGouraudShader = LinearColourShader<false>;
+
+// World position and normal interpolated, lit at every pixel: the original's 0.1.7 PhongShader,
+// whose point lights need the position.
+struct LinearPhongShader {
+    using Varying = SurfacePoint;
+    static constexpr bool kFacetNormal = false;
+    const LinearLighting* lighting;
+
+    [[nodiscard]] Varying vertex(const Corner& corner) const noexcept { return {corner.position, corner.normal}; }
+    [[nodiscard]] Rgb pixel(const Varying& point) const noexcept {
+        return srgb_from_linear(lighting->shade(point.position, unit_or_zero(point.normal)));
+    }
+};
+
+}  // namespace raster

@@ -1,0 +1,58 @@
+#pragma once
+
+#include <raster/shade/colour.hpp>
+#include <raster/rasterize/framebuffer.hpp>
+
+#include <array>
+#include <cstddef>
+#include <vector>
+#include <glm/vec2.hpp>
+
+// Colour textures: sRGB texels decoded to linear light before they are filtered, as a GPU's
+// SRGB8 formats do, with a mip chain averaged in linear light (doc/conventions.md#textures).
+namespace raster {
+
+// What happens outside [0, 1]: the image tiles, or its edge texels stretch on.
+enum class TextureWrap { repeat, clamp };
+// How texels become a colour: the texel under the point, a blend of the four nearest, or that
+// blend on the two mip levels whose texel size is nearest the pixel's footprint, blended again.
+enum class TextureFilter { nearest, bilinear, trilinear };
+
+struct Sampler {
+    TextureFilter filter = TextureFilter::trilinear;
+    TextureWrap wrap = TextureWrap::repeat;
+};
+
+// How texture coordinates change from one pixel to the next, in u and v per pixel; trilinear
+// filtering picks its mip level from it, the other filters ignore it.
+struct UvFootprint {
+    glm::vec2 per_pixel_x{0.0F};
+    glm::vec2 per_pixel_y{0.0F};
+};
+
+// An image read as a texture; u runs left to right and v bottom to top, as in OBJ and OpenGL,
+// so (0, 0) is the bottom-left corner of the image and texel centres sit at (i + ½) / width.
+class Texture {
+public:
+    // Adopts an image whose row 0 is its top row, its bytes sRGB-encoded; builds the mip chain.
+    explicit Texture(Framebuffer image);
+
+    [[nodiscard]] int width() const noexcept { return levels_.front().width(); }
+    [[nodiscard]] int height() const noexcept { return levels_.front().height(); }
+    // Level 0 is the image; each next level halves both sides (at least 1) down to 1 x 1.
+    [[nodiscard]] std::size_t level_count() const noexcept { return levels_.size(); }
+    [[nodiscard]] const Framebuffer& level(std::size_t index) const { return levels_.at(index); }
+
+    // The colour at (u, v) in linear light; never NaN, whatever u and v are.
+    [[nodiscard]] LinearRgb sample(glm::vec2 uv, const UvFootprint& footprint, Sampler sampler) const noexcept;
+
+private:
+    [[nodiscard]] LinearRgb texel(const Framebuffer& level, int x, int y) const noexcept;
+    [[nodiscard]] LinearRgb nearest(const Framebuffer& level, glm::vec2 uv, TextureWrap wrap) const noexcept;
+    [[nodiscard]] LinearRgb bilinear(const Framebuffer& level, glm::vec2 uv, TextureWrap wrap) const noexcept;
+
+    std::vector<Framebuffer> levels_;
+    std::array<float, 256> linear_from_byte_{};
+};
+
+}  // namespace raster

@@ -1,0 +1,55 @@
+#include <raster/camera/perspective_camera.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+namespace raster {
+
+PerspectiveCamera::PerspectiveCamera(OrthoCamera view, int width, int height, Lens lens)
+    : view_(view), width_(width), height_(height), lens_(lens) {
+    static_cast<void>(OrthoCamera(width, height));  // the same size limits, with the same errors
+    if (!(lens.fov_y_degrees > 0.0 && lens.fov_y_degrees < 180.0)) {
+        throw std::invalid_argument("field of view must be between 0 and 180 degrees, got " + std::to_string(lens.fov_y_degrees));
+    }
+    // Within these, view depths stay normal floats and their reciprocals finite.
+    constexpr double kNearest = 1e-18, kFarthest = 1e18;
+    if (!(lens.near >= kNearest && lens.far > lens.near && lens.far <= kFarthest)) {
+        throw std::invalid_argument("near and far must satisfy 1e-18 <= near < far <= 1e18, got near " +
+                                    std::to_string(lens.near) + " and far " + std::to_string(lens.far));
+    }
+    const double half_angle = lens.fov_y_degrees * std::numbers::pi / 360.0;
+    y_scale_ = 1.0 / std::tan(half_angle);
+    x_scale_ = y_scale_ * height / width;
+}
+
+PerspectiveCamera PerspectiveCamera::look_at(int width, int height, glm::vec3 eye, glm::vec3 target, glm::vec3 up,
+                                             Lens lens) {
+    return {OrthoCamera::look_at(width, height, eye, target, up), width, height, lens};
+}
+
+PerspectiveCamera PerspectiveCamera::first_person(int width, int height, glm::vec3 eye, double pitch, double yaw,
+                                                  Lens lens) {
+    if (!(std::abs(pitch) < std::numbers::pi / 2) || !std::isfinite(yaw)) {
+        throw std::invalid_argument("pitch must be strictly between -pi/2 and pi/2 and yaw finite");
+    }
+    const glm::dvec3 ahead{std::sin(yaw) * std::cos(pitch), std::sin(pitch), std::cos(yaw) * std::cos(pitch)};
+    // A target as far off as the eye itself, so that the direction survives rounding to float.
+    const glm::dvec3 target = glm::dvec3(eye) + ahead * std::max(1.0, glm::length(glm::dvec3(eye)));
+    return look_at(width, height, eye, glm::vec3(target), {0.0F, 1.0F, 0.0F}, lens);
+}
+
+glm::dvec4 PerspectiveCamera::clip_from_view(glm::dvec3 view) const noexcept {
+    const double depth_scale = lens_.far / (lens_.far - lens_.near);
+    return {view.x * x_scale_, view.y * y_scale_, (view.z - lens_.near) * depth_scale, view.z};
+}
+
+glm::dvec2 PerspectiveCamera::screen_from_clip(glm::dvec4 clip) const noexcept {
+    const double x_ndc = clip.x / clip.w, y_ndc = clip.y / clip.w;
+    return {(x_ndc + 1.0) * width_ / 2.0 - 0.5, (1.0 - y_ndc) * height_ / 2.0 - 0.5};
+}
+
+}  // namespace raster

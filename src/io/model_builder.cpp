@@ -1,0 +1,112 @@
+#include "io/model_builder.hpp"
+
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <numbers>
+#include <tuple>
+#include <glm/geometric.hpp>
+
+namespace raster::detail {
+
+namespace {
+
+// Twice the area times the outward unit normal, as (b - a) x (c - b) is in raster's world; in
+// double, where neither huge nor tiny float coordinates overflow or vanish.
+glm::dvec3 area_normal(const PolygonSoup& soup, const SoupTriangle& triangle) {
+    const glm::dvec3 a = soup.positions[static_cast<std::size_t>(triangle.corners[0].position)];
+    const glm::dvec3 b = soup.positions[static_cast<std::size_t>(triangle.corners[1].position)];
+    const glm::dvec3 c = soup.positions[static_cast<std::size_t>(triangle.corners[2].position)];
+    return glm::cross(b - a, c - b);
+}
+
+// The unit vector along v in float, or zero when v has no length or is not finite.
+glm::vec3 unit_of(glm::dvec3 v) {
+    const double length = glm::length(v);
+    if (!(length > 0.0) || !std::isfinite(length)) return glm::vec3(0.0F);
+    return glm::vec3(v / length);
+}
+
+// Beyond this many facets around one position, its corners keep their facets' normals: the
+// smoothing compares every pair, and a fan of thousands would take quadratic time.
+constexpr std::size_t kMaxSmoothedNeighbours = 64;
+
+// A vertex of the output: one position with one normal, one texture coordinate and one colour.
+using VertexKey = std::tuple<std::int64_t, std::uint32_t, std::uint32_t, std::uint32_t, std::int64_t, std::int64_t>;
+
+std::uint32_t bits_of(float value) {
+    std::uint32_t bits = 0;
+    std::memcpy(&bits, &value, sizeof bits);
+    return bits;
+}
+
+}  // namespace
+
+std::vector<std::pair<int, Mesh>> meshes_by_material(const PolygonSoup& soup, double crease_degrees) {
+    // Facet normals, and the facets around each position, for the normals the file lacks.
+    std::vector<glm::dvec3> weighted(soup.triangles.size());
+    std::vector<glm::vec3> unit(soup.triangles.size());
+    std::vector<std::vector<std::uint32_t>> around(soup.positions.size());
+    for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
+        weighted[t] = area_normal(soup, soup.triangles[t]);
+        unit[t] = unit_of(weighted[t]);
+        if (unit[t] == glm::vec3(0.0F)) continue;
+        for (const SoupCorner& corner : soup.triangles[t].corners) {
+            around[static_cast<std::size_t>(corner.position)].push_back(static_cast<std::uint32_t>(t));
+        }
+    }
+    const auto cos_crease = static_cast<float>(std::cos(crease_degrees * std::numbers::pi / 180.0));
+    const auto generated_normal = [&](std::size_t t, std::int64_t position) {
+        const std::vector<std::uint32_t>& neighbours = around[static_cast<std::size_t>(position)];
+        if (crease_degrees <= 0.0 || neighbours.size() > kMaxSmoothedNeighbours) return unit[t];
+        glm::dvec3 sum(0.0);
+        for (const std::uint32_t other : neighbours) {
+            // Area-weighted; in double, which float coordinates cannot overflow.
+            if (glm::dot(unit[other], unit[t]) >= cos_crease) sum += glm::dvec3(unit[other]) * glm::length(weighted[other]);
+        }
+        const glm::vec3 mean = unit_of(sum);
+        return mean == glm::vec3(0.0F) ? unit[t] : mean;
+    };
+
+    std::map<int, Mesh> meshes;
+    std::map<int, std::map<VertexKey, std::uint32_t>> vertices;
+    std::map<int, bool> textured, coloured;
+    for (const SoupTriangle& triangle : soup.triangles) {
+        for (const SoupCorner& corner : triangle.corners) {
+            if (corner.uv != kNoIndex) textured[triangle.material] = true;
+            if (corner.colour != kNoIndex) coloured[triangle.material] = true;
+        }
+    }
+    for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
+        if (unit[t] == glm::vec3(0.0F)) continue;  // no area: it could never cover a pixel
+        const SoupTriangle& triangle = soup.triangles[t];
+        Mesh& mesh = meshes[triangle.material];
+        auto& index_of = vertices[triangle.material];
+        const bool with_uvs = textured[triangle.material], with_colours = coloured[triangle.material];
+        Facet facet{{}, unit[t]};
+        for (std::size_t k = 0; k < 3; ++k) {
+            const SoupCorner& corner = triangle.corners[k];
+            glm::vec3 normal(0.0F);  // the file's, unless it has none or a zero or broken one
+            if (corner.normal != kNoIndex) normal = unit_or_zero(soup.normals[static_cast<std::size_t>(corner.normal)]);
+            if (normal == glm::vec3(0.0F)) normal = generated_normal(t, corner.position);
+            const VertexKey key{corner.position, bits_of(normal.x), bits_of(normal.y), bits_of(normal.z), corner.uv, corner.colour};
+            const auto [at, added] = index_of.try_emplace(key, static_cast<std::uint32_t>(mesh.positions.size()));
+            if (added) {
+                mesh.positions.push_back(soup.positions[static_cast<std::size_t>(corner.position)]);
+                mesh.normals.push_back(normal);
+                if (with_uvs) mesh.uvs.push_back(corner.uv != kNoIndex ? soup.uvs[static_cast<std::size_t>(corner.uv)] : glm::vec2(0.0F));
+                // A corner without a colour in a part with colours shows the material as it is.
+                if (with_colours) {
+                    mesh.colours.push_back(corner.colour != kNoIndex ? soup.colours[static_cast<std::size_t>(corner.colour)] : LinearRgb{1.0F, 1.0F, 1.0F});
+                }
+            }
+            facet.corners[k] = at->second;
+        }
+        mesh.facets.push_back(facet);
+    }
+    std::vector<std::pair<int, Mesh>> result;
+    for (auto& [material, mesh] : meshes) result.emplace_back(material, std::move(mesh));
+    return result;
+}
+
+}  // namespace raster::detail

@@ -1,0 +1,44 @@
+#pragma once
+
+#include <raster/geometry/mesh.hpp>
+
+#include <array>
+#include <cstdint>
+#include <utility>
+#include <vector>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+// Indexed meshes from a model file's triangles, whose corners index positions, normals,
+// texture coordinates and colours separately (as OBJ does), with normals made where the file has none.
+namespace raster::detail {
+
+inline constexpr std::int64_t kNoIndex = -1;
+
+struct SoupCorner {
+    std::int64_t position;
+    std::int64_t normal = kNoIndex;
+    std::int64_t uv = kNoIndex;
+    std::int64_t colour = kNoIndex;
+};
+
+// Corners clockwise seen from outside, in raster's world; every index valid or kNoIndex.
+struct SoupTriangle {
+    std::array<SoupCorner, 3> corners;
+    int material;
+};
+
+struct PolygonSoup {
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;
+    std::vector<glm::vec2> uvs;
+    std::vector<LinearRgb> colours;  // in linear light
+    std::vector<SoupTriangle> triangles;
+};
+
+// One mesh per material the triangles use, in order of material. Each corner without a usable normal
+// takes the area-weighted mean of the facet normals around its position that lie within
+// `crease_degrees` of its own facet's (0: every facet flat). Triangles with no area are dropped.
+[[nodiscard]] std::vector<std::pair<int, Mesh>> meshes_by_material(const PolygonSoup& soup, double crease_degrees);
+
+}  // namespace raster::detail

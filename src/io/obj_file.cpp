@@ -1,0 +1,363 @@
+// The only file that includes tinyobjloader.
+#include <raster/io/obj_file.hpp>
+
+#include "io/input_stream.hpp"
+#include "io/model_builder.hpp"
+#include "io/named_path.hpp"
+#include "io/obj_survey.hpp"
+#include "geometry/polygon_triangles.hpp"
+
+#include <raster/io/input_file.hpp>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <unordered_set>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+#include <vector>
+#include <tiny_obj_loader.h>
+
+namespace raster {
+
+namespace {
+
+// A problem that stops the model: the caller prefixes the file's name.
+struct BadModel : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// Binary files people pass by mistake (images, glTF, archives, programs) are refused from their
+// first bytes; OBJ and MTL have no signature of their own.
+bool not_binary(std::span<const std::uint8_t> head) {
+    const auto starts = [&](std::string_view magic) {
+        return head.size() >= magic.size() &&
+               std::equal(magic.begin(), magic.end(), head.begin(), [](char m, std::uint8_t b) { return static_cast<std::uint8_t>(m) == b; });
+    };
+    return !(starts("\x89PNG") || starts("\xFF\xD8\xFF") || starts("GIF8") || starts("RIFF") || starts("glTF") ||
+             starts("PK\x03\x04") || starts("\x7F" "ELF"));
+}
+
+InputRules text_rules(std::string role, std::string expected, const std::filesystem::path& confine) {
+    InputRules rules;
+    rules.role = std::move(role);
+    rules.max_bytes = kMaxModelFileBytes;
+    rules.signature = not_binary;
+    rules.signature_bytes = 8;
+    rules.expected = std::move(expected);
+    rules.confine = confine;
+    return rules;
+}
+
+// Notes a file the model names, whether or not it can be read: no output may replace it.
+void note_named(std::vector<InputRecord>& sources, const std::filesystem::path& path, const char* role) {
+    if (FileIdentity identity; identity_of(path, identity)) sources.push_back({path, identity, role});
+}
+
+// Reads each MTL file the OBJ names, from beside the OBJ (or from text given in memory), and
+// remembers which directory every material came from, for its texture paths.
+class MaterialLibraries final : public tinyobj::MaterialReader {
+public:
+    MaterialLibraries(std::filesystem::path directory, std::optional<std::string_view> text, std::string obj_name,
+                      const detail::ObjSurvey& survey, const ObjOptions& options)
+        : directory_(std::move(directory)), text_(text), obj_name_(std::move(obj_name)), survey_(survey), options_(options) {}
+
+    bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials, std::map<std::string, int>* names,
+                    std::string*, std::string*) override {
+        const std::filesystem::path path = text_ ? directory_ / name : detail::resolve_named_path(directory_, name, options_.confine);
+        std::string ignored_warnings, ignored_errors;  // LoadMtl's only warning is about d and Tr, both read anyway
+        if (text_) {
+            std::istringstream in{std::string(*text_)};
+            tinyobj::LoadMtl(names, materials, &in, &ignored_warnings, &ignored_errors);
+        } else {
+            note_named(sources_, path, "material library");
+            try {
+                InputFile file(path, text_rules("material library", "an MTL text file", options_.confine));
+                const std::string shown = printable(path.string());
+                for_each_line(file, shown, options_.max_line_bytes, [](std::string_view, std::size_t) {});
+                detail::InputStreamBuf buffer(file);
+                std::istream in(&buffer);
+                tinyobj::LoadMtl(names, materials, &in, &ignored_warnings, &ignored_errors);
+            } catch (const std::runtime_error& problem) {
+                if (failures_++ > 0) return false;  // one warning for the first; the count for the rest
+                const auto line = survey_.library_lines.find(name);
+                const std::string at = obj_name_ + (line != survey_.library_lines.end() ? ":" + std::to_string(line->second) : "") + ": ";
+                const std::string what = problem.what(), shown = printable(path.string());
+                // A line-cap refusal already names the library and its line.
+                first_failure_ = at + (what.starts_with(shown + ":") ? what : "material library '" + shown + "' " + what);
+                return false;
+            }
+        }
+        directories_.resize(materials->size(), path.parent_path());
+        return true;
+    }
+    [[nodiscard]] const std::filesystem::path& directory_of(std::size_t material) const { return directories_.at(material); }
+    // At most one warning, however many libraries failed.
+    [[nodiscard]] std::vector<std::string> warnings() const {
+        if (failures_ == 0) return {};
+        const std::string more = failures_ > 1 ? " (and " + std::to_string(failures_ - 1) + " more material libraries)" : "";
+        return {first_failure_ + more + "; drawing the default material"};
+    }
+    [[nodiscard]] std::vector<InputRecord>& sources() noexcept { return sources_; }
+    [[nodiscard]] bool any_failed() const noexcept { return failures_ > 0; }
+
+private:
+    std::filesystem::path directory_;
+    std::optional<std::string_view> text_;
+    std::string obj_name_;
+    const detail::ObjSurvey& survey_;
+    const ObjOptions& options_;
+    std::vector<std::filesystem::path> directories_;
+    std::string first_failure_;
+    std::size_t failures_ = 0;
+    std::vector<InputRecord> sources_;
+};
+
+// Checks one index of a face corner against the count of what it names.
+std::int64_t checked(int index, std::size_t count, const char* what, std::size_t face, bool optional) {
+    if (index < 0 && optional) return detail::kNoIndex;
+    if (index < 0 || static_cast<std::size_t>(index) >= count) {
+        throw BadModel("face " + std::to_string(face + 1) + " names " + what + " " + std::to_string(index + 1) + ", but the file has " +
+                       std::to_string(count));
+    }
+    return index;
+}
+
+// Positions and normals mirrored into raster's left-handed world; each face split into exactly
+// its own area and every piece re-wound to match.
+detail::PolygonSoup soup_from(const tinyobj::attrib_t& attrib, const std::vector<tinyobj::shape_t>& shapes, std::size_t& skipped) {
+    detail::PolygonSoup soup;
+    for (std::size_t i = 0; i + 2 < attrib.vertices.size(); i += 3) {
+        soup.positions.emplace_back(attrib.vertices[i], attrib.vertices[i + 1], -attrib.vertices[i + 2]);
+    }
+    for (std::size_t i = 0; i + 2 < attrib.normals.size(); i += 3) {
+        soup.normals.emplace_back(attrib.normals[i], attrib.normals[i + 1], -attrib.normals[i + 2]);
+    }
+    for (std::size_t i = 0; i + 1 < attrib.texcoords.size(); i += 2) soup.uvs.emplace_back(attrib.texcoords[i], attrib.texcoords[i + 1]);
+    std::size_t face = 0;
+    std::vector<detail::SoupCorner> corners;
+    std::vector<glm::dvec3> outline;
+    for (const tinyobj::shape_t& shape : shapes) {
+        std::size_t next = 0;
+        for (std::size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f, ++face) {
+            const std::size_t count = shape.mesh.num_face_vertices[f];
+            const std::size_t first = next;
+            next += count;
+            if (next > shape.mesh.indices.size()) throw BadModel("face " + std::to_string(face + 1) + " is cut short");
+            if (count < 3) {  // tinyobjloader drops these itself; kept as a guard
+                ++skipped;
+                continue;
+            }
+            corners.clear();
+            outline.clear();
+            for (std::size_t k = first; k < next; ++k) {
+                const tinyobj::index_t& index = shape.mesh.indices[k];
+                const detail::SoupCorner corner{checked(index.vertex_index, soup.positions.size(), "vertex", face, false),
+                                                checked(index.normal_index, soup.normals.size(), "normal", face, true),
+                                                checked(index.texcoord_index, soup.uvs.size(), "texture coordinate", face, true)};
+                const glm::vec3& p = soup.positions[static_cast<std::size_t>(corner.position)];
+                if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {  // the survey refuses these first
+                    throw BadModel("vertex " + std::to_string(corner.position + 1) + " is not a finite point");
+                }
+                corners.push_back(corner);
+                outline.emplace_back(p);
+            }
+            const int material = f < shape.mesh.material_ids.size() ? shape.mesh.material_ids[f] : -1;
+            // Each piece turned from OBJ's counter-clockwise to raster's clockwise order.
+            for (const auto& [a, b, c] : detail::triangles_of_polygon(outline)) {
+                soup.triangles.push_back({{corners[a], corners[c], corners[b]}, material});
+            }
+        }
+    }
+    return soup;
+}
+
+PhongMaterial material_from(const tinyobj::material_t& m) {
+    const auto colour = [](const tinyobj::real_t* c) {
+        const auto usable = [](tinyobj::real_t v) { return std::isfinite(v) ? std::max(0.0F, v) : 0.0F; };
+        return LinearRgb{usable(c[0]), usable(c[1]), usable(c[2])};
+    };
+    PhongMaterial material{colour(m.emission), colour(m.diffuse), colour(m.specular), std::nullopt};
+    const bool has_specular = material.specular != LinearRgb{};
+    if (has_specular && std::isfinite(m.shininess) && m.shininess > 0.0F) material.shininess = m.shininess;
+    return material;
+}
+
+// tinyobjloader fails a load only on an index it cannot read in a statement the survey does not
+// check (l, p, vw): said in raster's words, with the line where its message has one.
+std::runtime_error load_failure(const std::string& err, const std::string& name) {
+    const std::size_t at = err.find("line ");
+    std::size_t line = 0;
+    if (at != std::string::npos) std::from_chars(err.data() + at + 5, err.data() + err.size(), line);
+    if (line == 0) return std::runtime_error(name + ": not an OBJ model raster can read");
+    return std::runtime_error(name + ":" + std::to_string(line) + ": a statement with an index raster cannot read");
+}
+
+// Rethrows the exception being handled as one line that begins with the file's name.
+[[noreturn]] void rethrow_named(const std::string& name) {
+    try {
+        throw;
+    } catch (const std::runtime_error& problem) {
+        const std::string what = problem.what();
+        throw std::runtime_error(what.starts_with(name + ":") ? what : name + ": " + what);
+    }
+}
+
+// The survey's word on materials a face asks for that no library gave, unless a library that
+// failed already explains it: one warning for one fact.
+void warn_of_missing_materials(Model& model, const std::string& name, const detail::ObjSurvey& survey,
+                               const std::vector<tinyobj::material_t>& materials, bool a_library_failed) {
+    if (a_library_failed) return;
+    std::unordered_set<std::string_view> defined;
+    for (const tinyobj::material_t& m : materials) defined.insert(m.name);
+    const detail::NamedAt* first = nullptr;
+    std::size_t missing = 0;
+    for (const detail::NamedAt& used : survey.materials) {
+        if (defined.contains(used.name)) continue;
+        if (missing++ == 0) first = &used;
+    }
+    if (first == nullptr) return;
+    const std::string more = missing > 1 ? " (nor " + std::to_string(missing - 1) + " more materials the faces use)" : "";
+    model.warnings.push_back(name + ":" + std::to_string(first->line) + ": material '" + printable(first->name, 80) + "' " +
+                             (survey.library_lines.empty() ? "is used, but the file names no material library"
+                                                           : "is in none of the file's material libraries") +
+                             more + "; drawing the default material");
+}
+
+// tinyobjloader must have read the statements the survey checked, no more and no fewer: a
+// disagreement would leave a number unchecked.
+void check_same_reading(const tinyobj::attrib_t& attrib, const detail::ObjSurvey& survey) {
+    const std::array<std::size_t, 3> read = {attrib.vertices.size() / 3, attrib.texcoords.size() / 2, attrib.normals.size() / 3};
+    if (read != survey.defined) {
+        throw std::runtime_error("the file's v, vt and vn lines were counted as " + std::to_string(survey.defined[0]) + ", " +
+                                 std::to_string(survey.defined[1]) + " and " + std::to_string(survey.defined[2]) + " by one reading and " +
+                                 std::to_string(read[0]) + ", " + std::to_string(read[1]) + " and " + std::to_string(read[2]) +
+                                 " by the other; please report this file");
+    }
+}
+
+Model model_from(std::istream& obj, const std::string& name, const detail::ObjSurvey& survey, MaterialLibraries& libraries,
+                 const ObjOptions& options, bool load_maps) {
+    tinyobj::attrib_t attrib;
+    std::vector<tinyobj::shape_t> shapes;
+    std::vector<tinyobj::material_t> materials;
+    std::string ignored_warnings, err;  // the survey has said what matters, in raster's words
+    if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &ignored_warnings, &err, &obj, &libraries, false, false)) {
+        throw load_failure(err, name);
+    }
+    check_same_reading(attrib, survey);
+    Model model;
+    model.warnings = survey.warnings;
+    for (std::string& warning : libraries.warnings()) model.warnings.push_back(std::move(warning));
+    warn_of_missing_materials(model, name, survey, materials, libraries.any_failed());
+    model.sources = std::move(libraries.sources());
+    std::size_t skipped = survey.skipped_faces;
+    std::size_t dropped_again = 0;
+    const detail::PolygonSoup soup = soup_from(attrib, shapes, dropped_again);
+    skipped = std::max(skipped, dropped_again);
+    if (skipped > 0) model.warnings.push_back(name + ": skipped " + std::to_string(skipped) + " faces with fewer than 3 corners");
+    std::map<std::filesystem::path, std::shared_ptr<const Texture>> loaded;  // by canonical path: each file read once
+    std::size_t texels = 0;
+    bool translucent = false;
+    for (auto& [id, mesh] : detail::meshes_by_material(soup, options.crease_degrees)) {
+        ModelPart part{"", std::move(mesh), default_model_material()};
+        if (id >= 0 && static_cast<std::size_t>(id) < materials.size()) {
+            const tinyobj::material_t& m = materials[static_cast<std::size_t>(id)];
+            part.material_name = m.name;
+            part.material = material_from(m);
+            translucent = translucent || m.dissolve < 1.0F;
+            part.sampler.wrap = m.diffuse_texopt.clamp ? TextureWrap::clamp : TextureWrap::repeat;
+            const std::string material = "material '" + printable(m.name) + "'";
+            if (!m.diffuse_texname.empty() && load_maps) {
+                const std::filesystem::path given =
+                    detail::resolve_named_path(libraries.directory_of(static_cast<std::size_t>(id)), m.diffuse_texname, options.confine);
+                std::error_code error;
+                std::filesystem::path map = std::filesystem::weakly_canonical(given, error);
+                if (error) map = given;
+                note_named(model.sources, given, "texture");
+                if (part.mesh.uvs.empty()) {
+                    model.warnings.push_back(name + ": " + material + " has a map but its faces have no texture coordinates; drawing its colour");
+                } else if (const auto found = loaded.find(map); found != loaded.end()) {
+                    part.texture = found->second;
+                } else {
+                    try {
+                        const std::size_t left = kMaxModelTexels - texels;
+                        if (left == 0) {
+                            throw std::runtime_error(printable(given.string()) + ": the model's textures already hold " +
+                                                     std::to_string(kMaxModelTexels) + " texels");
+                        }
+                        part.texture = std::make_shared<const Texture>(
+                            read_texture(given, std::min(options.max_texels, left), options.confine, &model.sources));
+                        texels += static_cast<std::size_t>(part.texture->width()) * static_cast<std::size_t>(part.texture->height());
+                    } catch (const std::runtime_error& problem) {
+                        model.warnings.push_back(std::string(problem.what()) + "; drawing " + material + " in its colour");
+                    }
+                    loaded.emplace(map, part.texture);
+                }
+            }
+        }
+        model.parts.push_back(std::move(part));
+    }
+    if (translucent) model.warnings.push_back(name + ": transparency (d below 1) is not supported; drawing those materials opaque");
+    // One line per distinct warning, however often the file repeats its cause.
+    std::vector<std::string> distinct;
+    std::unordered_set<std::string> seen;
+    for (std::string& warning : model.warnings) {
+        if (seen.insert(warning).second) distinct.push_back(std::move(warning));
+    }
+    model.warnings = std::move(distinct);
+    if (model.parts.empty() && !soup.triangles.empty()) {
+        float farthest = 0.0F;
+        for (const glm::vec3& p : soup.positions) farthest = std::max({farthest, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+        // 32-bit floats keep about 7 digits: far from the origin, a small face collapses to a line.
+        char hint[160] = "";
+        if (farthest >= 65536.0F) {
+            std::snprintf(hint, sizeof hint, " (stored as 32-bit floats, coordinates near %.0e step by %g: move the model nearer the origin)",
+                          static_cast<double>(farthest), static_cast<double>(std::nextafter(farthest, HUGE_VALF) - farthest));
+        }
+        throw BadModel(std::string("every face has no area") + hint);
+    }
+    if (model.parts.empty()) throw BadModel("no faces to draw");
+    return model;
+}
+
+}  // namespace
+
+Model read_obj(const std::filesystem::path& path, const ObjOptions& options) {
+    const std::string name = printable(path.string());
+    try {
+        InputFile file(path, text_rules("model", "a Wavefront OBJ text file", options.confine));
+        const detail::ObjSurvey survey = detail::survey_obj(name, kMaxFaceCorners, [&](const auto& visit) {
+            for_each_line(file, name, options.max_line_bytes, visit);
+        });
+        detail::InputStreamBuf buffer(file);
+        std::istream in(&buffer);
+        MaterialLibraries libraries(path.parent_path(), std::nullopt, name, survey, options);
+        Model model = model_from(in, name, survey, libraries, options, options.load_textures);
+        model.sources.insert(model.sources.begin(), file.record());
+        return model;
+    } catch (const std::runtime_error&) {
+        rethrow_named(name);
+    }
+}
+
+Model parse_obj(std::string_view obj, std::string_view mtl, ObjOptions options) {
+    const std::string name = "<memory>";
+    try {
+        if (obj.starts_with("\xEF\xBB\xBF")) obj.remove_prefix(3);  // a UTF-8 byte order mark, as a file's is skipped
+        const detail::ObjSurvey survey = detail::survey_obj(
+            name, kMaxFaceCorners, [&](const auto& visit) { for_each_line(obj, name, options.max_line_bytes, visit); });
+        std::istringstream in{std::string(obj)};
+        MaterialLibraries libraries(".", mtl, name, survey, options);
+        return model_from(in, name, survey, libraries, options, false);
+    } catch (const std::runtime_error&) {
+        rethrow_named(name);
+    }
+}
+
+}  // namespace raster

@@ -1,0 +1,222 @@
+#include <raster/render/scene.hpp>
+
+#include <raster/rasterize/draw_mesh.hpp>
+#include <raster/shade/textured_shaders.hpp>
+
+#include "camera/clipped_facets.hpp"
+#include "geometry/posing.hpp"
+#include "rasterize/strip_bins.hpp"
+#include "rasterize/worker_team.hpp"
+
+#include <algorithm>
+#include <numeric>
+#include <utility>
+#include <thread>
+#include <type_traits>
+#include <vector>
+#include <cmath>
+#include <numbers>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+namespace raster {
+
+bool needs_depth(std::span<const SceneObject> objects) noexcept {
+    std::size_t meshes = 0;
+    bool convex = true;
+    for (const SceneObject& object : objects) {
+        if (!object.mesh) continue;
+        ++meshes;
+        convex = convex && object.mesh->convex;
+    }
+    return meshes > 1 || !convex;
+}
+
+namespace {
+
+// Lights one object by its material and hands `draw` the shader its shading method asks for.
+// `eye` is the viewer's position in perspective; orthographic views have `to_eye` alone.
+template <typename Draw>
+std::size_t draw_shaded(const SceneObject& object, std::span<const DirectionalLight> lights,
+                        std::span<const PointLight> points, glm::vec3 to_eye, std::optional<glm::vec3> eye,
+                        std::optional<DepthDarkening> darkening, Draw draw) {
+    if (const auto* phase1 = std::get_if<Material>(&object.material)) {
+        // Phase 1's model has one viewer direction, the camera's, even in perspective.
+        const Lighting lighting(*phase1, lights, to_eye);
+        switch (object.shading) {
+        case ShadingMethod::flat: return draw(FlatShader{&lighting});
+        case ShadingMethod::gouraud: return draw(GouraudShader{&lighting});
+        case ShadingMethod::phong: return draw(PhongShader{&lighting});
+        case ShadingMethod::unlit: return draw(UnlitShader{{linear_from_srgb(phase1->base)}});
+        }
+        return 0;
+    }
+    const PhongMaterial& material = std::get<PhongMaterial>(object.material);
+    const LinearLighting lighting(material, lights, points, to_eye, eye, darkening);
+    const DiffuseSource diffuse{material.diffuse, object.texture.get(), object.sampler};
+    if (!object.mesh->colours.empty()) {  // the corners' colours interpolated to every pixel
+        switch (object.shading) {
+        case ShadingMethod::flat: return draw(TintedFlatShader{&lighting, diffuse});
+        case ShadingMethod::gouraud: return draw(TintedGouraudShader{&lighting, diffuse});
+        case ShadingMethod::unlit: return draw(TintedUnlitShader{diffuse});
+        default: return draw(TintedPhongShader{&lighting, diffuse});
+        }
+    }
+    if (object.shading == ShadingMethod::unlit) return draw(UnlitShader{diffuse});
+    if (object.texture) {  // the textured shaders read the texture at every pixel
+        switch (object.shading) {
+        case ShadingMethod::flat: return draw(TexturedFlatShader{&lighting, diffuse});
+        case ShadingMethod::gouraud: return draw(TexturedGouraudShader{&lighting, diffuse});
+        default: return draw(TexturedPhongShader{&lighting, diffuse});
+        }
+    }
+    switch (object.shading) {
+    case ShadingMethod::flat: return draw(LinearFlatShader{&lighting});
+    case ShadingMethod::gouraud: return draw(LinearGouraudShader{&lighting});
+    default: return draw(LinearPhongShader{&lighting});
+    }
+}
+
+// The threads a render uses: the count asked for, 0 meaning one per core, at most kMaxThreads.
+int thread_count(int asked) {
+    if (asked < 0) throw std::invalid_argument("thread count must be 0 (one per core) or more, got " + std::to_string(asked));
+    const int cores = static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
+    return std::clamp(asked == 0 ? cores : asked, 1, kMaxThreads);
+}
+
+// Items per batch of the front end: about four batches a thread, each between these sizes, so
+// that a small mesh stays on one thread (waking another costs more) and a big one is shared.
+constexpr std::size_t kSmallestBatch = 2048;
+constexpr std::size_t kLargestBatch = 8192;
+
+// Clears to the background, prepares depth only when the scene needs it, and draws every object
+// in three parallel steps on `team`: its vertices posed and put
+// through the front end `front_for(mesh, shader)` in batches, then its facets
+// likewise, each batch binned into strips of rows, then the strips, cleared on the first
+// object's pass and drawn with every batch's triangles in facet order.
+template <detail::Interpolation kMode, typename Camera, typename FrontFor>
+std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& scene, DepthBuffer& depth,
+                           std::optional<glm::vec3> eye, detail::WorkerTeam& team, FrontFor front_for) {
+    const bool depth_test = needs_depth(scene);
+    if (depth_test) depth.resize(framebuffer.width(), framebuffer.height());  // each strip clears its own rows
+    DepthBuffer* const tested = depth_test ? &depth : nullptr;
+    const glm::vec3 to_eye = -scene.camera.direction();
+    const detail::StripLayout layout = detail::StripLayout::of(framebuffer.width(), framebuffer.height());
+    const auto batch_size = [&](std::size_t items) {
+        const auto share = static_cast<std::size_t>(4 * team.size());
+        return std::clamp((items + share - 1) / share, kSmallestBatch, kLargestBatch);
+    };
+    const auto batches = [](std::size_t items, std::size_t per) { return static_cast<int>((items + per - 1) / per); };
+    const auto range = [](int batch, std::size_t items, std::size_t per) {
+        const std::size_t begin = static_cast<std::size_t>(batch) * per;
+        return std::pair{begin, std::min(items, begin + per)};
+    };
+    bool cleared = false;
+    const auto clear = [&](const PixelRect& strip) {
+        framebuffer.clear_rows(strip.y, strip.y + strip.height, scene.background);
+        if (tested != nullptr) tested->clear_rows(strip.y, strip.y + strip.height);
+    };
+    std::size_t drawn = 0;
+    for (const SceneObject& object : scene.objects) {
+        if (!object.mesh) continue;  // an object without a mesh shows nothing
+        drawn += draw_shaded(object, scene.lights, scene.point_lights, to_eye, eye, scene.darkening, [&](const auto& shader) {
+            using Shader = std::remove_cvref_t<decltype(shader)>;
+            const bool per_facet = Shader::kFacetNormal || object.mesh->surface == Surface::faceted;
+            detail::check_drawable(framebuffer, tested, *object.mesh);  // before posing reads its facets
+            detail::Posing posing(*object.mesh, object.model, {.vertex_normals = !per_facet, .facet_normals = per_facet});
+            const Mesh& mesh = posing.mesh();  // sized now, filled by the batches below
+            auto front = front_for(mesh, shader);
+            const std::size_t vertices = mesh.positions.size(), facets = mesh.facets.size();
+            const std::size_t vertex_batch = batch_size(vertices), facet_batch = batch_size(facets);
+            team.for_each(batches(vertices, vertex_batch), [&](int b) {
+                const auto [begin, end] = range(b, vertices, vertex_batch);
+                posing.vertices(begin, end);
+                front.vertices(begin, end);  // reads vertex i's posed data only
+            });
+            std::vector<detail::StripBins<typename Shader::Varying>> bins(static_cast<std::size_t>(batches(facets, facet_batch)),
+                                                                          detail::StripBins<typename Shader::Varying>(layout));
+            std::vector<std::size_t> counted(bins.size());
+            team.for_each(static_cast<int>(bins.size()), [&](int b) {
+                const auto [begin, end] = range(b, facets, facet_batch);
+                detail::StripBins<typename Shader::Varying>& batch = bins[static_cast<std::size_t>(b)];
+                batch.reserve(end - begin);
+                posing.facets(begin, end);  // facet f reads its own posed corners and normal only
+                counted[static_cast<std::size_t>(b)] = front.facets(begin, end, [&](const auto& corners) { batch.add(corners); });
+                batch.finish();
+            });
+            team.for_each(layout.count(), [&](int s) {
+                const PixelRect strip = layout.strip(s);
+                if (!cleared) clear(strip);
+                for (const auto& batch : bins) {
+                    batch.for_each_in(s, [&](const auto& corners) {
+                        detail::shade_triangle<Shader, detail::FloatDepth, kMode>(framebuffer, tested, corners, shader, {}, strip);
+                    });
+                }
+            });
+            cleared = true;
+            return std::accumulate(counted.begin(), counted.end(), std::size_t{0});
+        });
+    }
+    if (!cleared) {
+        team.for_each(layout.count(), [&](int s) { clear(layout.strip(s)); });
+    }
+    return drawn;
+}
+
+std::size_t draw(Framebuffer& framebuffer, const Scene& scene, DepthBuffer& depth, detail::WorkerTeam& team) {
+    // Orthographic: attributes are linear on screen, and the direction toward the viewer is the same at every pixel.
+    return render_objects<detail::Interpolation::screen_linear>(framebuffer, scene, depth, std::nullopt, team,
+                                                                [&](const Mesh& mesh, const auto& shader) {
+                                                                    return detail::OrthoFront(scene.camera, mesh, shader);
+                                                                });
+}
+
+std::size_t draw(Framebuffer& framebuffer, const PerspectiveScene& scene, DepthBuffer& depth, detail::WorkerTeam& team) {
+    // Phase 2 takes the direction toward the eye at every point.
+    return render_objects<detail::Interpolation::perspective>(
+        framebuffer, scene, depth, scene.camera.eye(), team, [&](const Mesh& mesh, const auto& shader) {
+            return detail::PerspectiveFront(framebuffer, scene.camera, mesh, shader, detail::kGuardBandPixels);
+        });
+}
+
+}  // namespace
+
+std::size_t render(Framebuffer& framebuffer, const Scene& scene, DepthBuffer& depth, RenderOptions options) {
+    detail::WorkerTeam team(std::min(thread_count(options.threads), framebuffer.height()));
+    return draw(framebuffer, scene, depth, team);
+}
+
+std::size_t render(Framebuffer& framebuffer, const PerspectiveScene& scene, DepthBuffer& depth, RenderOptions options) {
+    detail::WorkerTeam team(std::min(thread_count(options.threads), framebuffer.height()));
+    return draw(framebuffer, scene, depth, team);
+}
+
+Renderer::Renderer(RenderOptions options) : team_(std::make_unique<detail::WorkerTeam>(thread_count(options.threads))) {}
+Renderer::~Renderer() = default;
+Renderer::Renderer(Renderer&&) noexcept = default;
+Renderer& Renderer::operator=(Renderer&&) noexcept = default;
+int Renderer::threads() const noexcept { return team_->size(); }
+std::size_t Renderer::render(Framebuffer& framebuffer, const Scene& scene) { return draw(framebuffer, scene, depth_, *team_); }
+std::size_t Renderer::render(Framebuffer& framebuffer, const PerspectiveScene& scene) {
+    return draw(framebuffer, scene, depth_, *team_);
+}
+
+PerspectiveScene in_perspective(const Scene& scene, int width, int height, double fov_degrees) {
+    if (!(fov_degrees > 0.0 && fov_degrees < 180.0)) {
+        throw std::invalid_argument("field of view must be between 0 and 180 degrees, got " + std::to_string(fov_degrees));
+    }
+    const OrthoCamera& flat = scene.camera;
+    const double to_origin = flat.view_from_world(glm::vec3(0.0F)).z;
+    // Pixels per world unit match the orthographic camera's on the plane through the origin.
+    const double half_angle = fov_degrees * std::numbers::pi / 360.0;
+    const double distance = height / (2.0 * std::max(flat.scale(), 0.5) * std::tan(half_angle));
+    const PerspectiveCamera::Lens lens{fov_degrees, distance / 100.0, distance + 100.0};
+    // The same axes, the eye moved in double precision: no rounding through floats on the way.
+    const OrthoCamera moved = flat.dollied(to_origin - distance);
+    if (!std::isfinite(glm::length(glm::dvec3(moved.eye())))) throw std::invalid_argument("camera eye is too far out to move back");
+    const PerspectiveCamera camera = PerspectiveCamera::from_view(moved, width, height, lens);
+    return {camera, scene.background, scene.lights, scene.point_lights, scene.objects, scene.darkening};
+}
+
+}  // namespace raster

@@ -1,0 +1,144 @@
+// The one bounded way to read a file: what it refuses, how fast, and what it reads.
+#include <raster/io/input_file.hpp>
+
+#include "support/scratch.hpp"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <fcntl.h>
+#include <string>
+#include <sys/stat.h>
+#include <unistd.h>
+
+using test_support::ScratchDir;
+
+namespace {
+
+bool starts_with_abc(std::span<const std::uint8_t> head) { return head.size() >= 3 && head[0] == 'a' && head[1] == 'b' && head[2] == 'c'; }
+
+raster::InputRules rules(std::uintmax_t max_bytes = 1 << 20) {
+    raster::InputRules r;
+    r.role = "test file";
+    r.max_bytes = max_bytes;
+    r.signature = starts_with_abc;
+    r.signature_bytes = 3;
+    r.expected = "an abc file";
+    return r;
+}
+
+// The message InputFile throws for `path`, or "" when it opens.
+std::string refusal(const std::filesystem::path& path, const raster::InputRules& r = rules()) {
+    try {
+        raster::InputFile file(path, r);
+    } catch (const std::runtime_error& error) {
+        return error.what();
+    }
+    return "";
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+TEST(InputFile, ReadsARegularFileWholeAndNamesWhatItWas) {
+    const ScratchDir dir;
+    test_support::write_text(dir / "a.txt", "abc and more");
+    std::vector<raster::InputRecord> sources;
+    const std::vector<std::uint8_t> bytes = raster::read_input_file(dir / "a.txt", rules(), &sources);
+    EXPECT_EQ(std::string(bytes.begin(), bytes.end()), "abc and more");
+    ASSERT_EQ(sources.size(), 1U);
+    raster::FileIdentity identity;
+    ASSERT_TRUE(raster::identity_of(dir / "a.txt", identity));
+    EXPECT_EQ(sources[0].identity, identity);
+    EXPECT_EQ(sources[0].role, "test file");
+}
+
+TEST(InputFile, DirectoriesFifosDevicesAndSocketsAreRefusedWithoutBlocking) {
+    const ScratchDir dir;
+    ASSERT_EQ(::mkfifo((dir / "pipe").c_str(), 0600), 0);
+    const auto start = std::chrono::steady_clock::now();
+    EXPECT_EQ(refusal(dir / "pipe"), "is a FIFO, not a regular file");  // no writer: a blocking open would wait forever
+    EXPECT_EQ(refusal("/dev/zero"), "is a device, not a regular file");
+    EXPECT_EQ(refusal(dir.path()), "is a directory, not a file");
+    EXPECT_EQ(refusal(dir / "missing"), "does not exist");
+    EXPECT_LT(seconds_since(start), 5.0);
+}
+
+TEST(InputFile, TheSizeCapIsCheckedBeforeAnyByteIsRead) {
+    const ScratchDir dir;
+    // A sparse file of 2 GiB: reading it would take seconds and gigabytes.
+    const int descriptor = ::open((dir / "big").c_str(), O_WRONLY | O_CREAT, 0600);
+    ASSERT_GE(descriptor, 0);
+    ASSERT_EQ(::ftruncate(descriptor, off_t{2} << 30), 0);
+    ::close(descriptor);
+    const auto start = std::chrono::steady_clock::now();
+    EXPECT_EQ(refusal(dir / "big", rules(std::uintmax_t{1} << 30)), "is 2048 MiB, more than the 1024 MiB allowed");
+    EXPECT_LT(seconds_since(start), 1.0);
+}
+
+TEST(InputFile, TheSignatureIsCheckedInTheFirstBytes) {
+    const ScratchDir dir;
+    test_support::write_text(dir / "wrong", "xyz");
+    test_support::write_text(dir / "empty", "");
+    test_support::write_text(dir / "short", "ab");
+    EXPECT_EQ(refusal(dir / "wrong"), "is not an abc file");
+    EXPECT_EQ(refusal(dir / "empty"), "is empty, not an abc file");
+    EXPECT_EQ(refusal(dir / "short"), "is not an abc file");
+}
+
+TEST(InputFile, ConfinementRefusesWhatLiesOutsideEvenThroughLinksAndDotDot) {
+    const ScratchDir dir;
+    std::filesystem::create_directory(dir / "inside");
+    test_support::write_text(dir / "inside" / "ok", "abc");
+    test_support::write_text(dir / "secret", "abc");
+    std::filesystem::create_symlink(dir / "secret", dir / "inside" / "link");
+    raster::InputRules confined = rules();
+    confined.confine = raster::confinement_root(dir / "inside");
+    EXPECT_EQ(refusal(dir / "inside" / "ok", confined), "");
+    const std::string outside = "lies outside '" + confined.confine.string() + "', where reading is confined";
+    EXPECT_EQ(refusal(dir / "secret", confined), outside);
+    EXPECT_EQ(refusal(dir / "inside" / ".." / "secret", confined), outside);
+    EXPECT_EQ(refusal(dir / "inside" / "link", confined), outside);
+    EXPECT_THROW((void)raster::confinement_root(dir / "nowhere"), std::runtime_error);
+    EXPECT_THROW((void)raster::confinement_root(dir / "secret"), std::runtime_error);
+}
+
+TEST(InputFile, LinesAreVisitedWithTheirNumbersAndALongLineIsRefusedByNumber) {
+    const ScratchDir dir;
+    // Ends as tinyobjloader reads them: "\n", "\r\n" and a lone "\r"; a line of exactly the cap is read.
+    test_support::write_text(dir / "lines", "abc\n\nthird\r\nfourth\rsixteen-letters!\nlast");
+    raster::InputFile file(dir / "lines", rules());
+    std::vector<std::pair<std::string, std::size_t>> seen;
+    raster::for_each_line(file, "lines", 16, [&](std::string_view line, std::size_t number) { seen.emplace_back(line, number); });
+    EXPECT_EQ(seen, (std::vector<std::pair<std::string, std::size_t>>{
+                        {"abc", 1}, {"", 2}, {"third", 3}, {"fourth", 4}, {"sixteen-letters!", 5}, {"last", 6}}));
+    // The same text in memory, and a "\r\n" split between two reads of the file, end lines alike.
+    std::vector<std::pair<std::string, std::size_t>> in_memory;
+    raster::for_each_line("abc\n\nthird\r\nfourth\rsixteen-letters!\nlast", "lines", 16,
+                          [&](std::string_view line, std::size_t number) { in_memory.emplace_back(line, number); });
+    EXPECT_EQ(in_memory, seen);
+    test_support::write_text(dir / "split", "abc" + std::string((1 << 16) - 4, 'x') + "\r\nnext\n");
+    raster::InputFile split(dir / "split", rules());
+    std::vector<std::size_t> lengths;
+    raster::for_each_line(split, "split", 1 << 20, [&](std::string_view line, std::size_t) { lengths.push_back(line.size()); });
+    EXPECT_EQ(lengths, (std::vector<std::size_t>{(1 << 16) - 1, 4}));
+    // A line longer than the cap, spanning many read blocks, is refused by its number.
+    test_support::write_text(dir / "long", "abc\n" + std::string(300000, 'x') + "\nend\n");
+    raster::InputFile long_file(dir / "long", rules());
+    try {
+        raster::for_each_line(long_file, "long", 100000, [](std::string_view, std::size_t) {});
+        ADD_FAILURE() << "a 300000-byte line was read whole";
+    } catch (const std::runtime_error& error) {
+        EXPECT_STREQ(error.what(), "long:2: a line longer than 1 MiB, the most raster reads in one line");
+    }
+}
+
+TEST(InputFile, PrintableEscapesControlBytesAndKeepsUtf8) {
+    EXPECT_EQ(raster::printable(std::string("f 1\0 2", 6)), "f 1\\x00 2");
+    EXPECT_EQ(raster::printable("a\tb\x1b[31m"), "a\\x09b\\x1b[31m");
+    EXPECT_EQ(raster::printable("caf\xc3\xa9"), "caf\xc3\xa9");
+    EXPECT_EQ(raster::printable(std::string(100, 'x'), 10), "xxxxxxxxxx...");
+}

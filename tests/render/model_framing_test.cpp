@@ -1,0 +1,80 @@
+// Framing, near and far, and depth follow the model's size: a model drawn at a thousandth or a
+// million times the size, or ten million units from the origin, gives the same picture.
+#include <raster/render/model_scene.hpp>
+#include <raster/io/obj_file.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <string>
+
+using raster::Framebuffer;
+
+namespace {
+
+// Two unit squares, the red one half a unit behind and beside the green one, so depth decides
+// what shows where they overlap; `scale` and `offset` place both in the file's coordinates.
+std::string two_squares(double scale, double offset) {
+    std::string obj;
+    const auto vertex = [&](double x, double y, double z) {
+        char line[128];
+        std::snprintf(line, sizeof line, "v %.17g %.17g %.17g\n", offset + x * scale, offset + y * scale, offset + z * scale);
+        obj += line;
+    };
+    for (const double z : {0.0, -0.5}) {
+        const double shift = z == 0.0 ? 0.0 : 0.5;
+        vertex(shift, shift, z);
+        vertex(shift + 1, shift, z);
+        vertex(shift + 1, shift + 1, z);
+        vertex(shift, shift + 1, z);
+    }
+    return "mtllib m.mtl\nusemtl green\n" + obj + "f 1 2 3 4\nusemtl red\nf 5 6 7 8\n";
+}
+
+Framebuffer picture_of(double scale, double offset, bool orthographic) {
+    const raster::Model model = raster::parse_obj(two_squares(scale, offset), "newmtl green\nKd 0 1 0\nnewmtl red\nKd 1 0 0\n");
+    raster::ModelView view;
+    view.shading = raster::ShadingMethod::unlit;
+    view.orthographic = orthographic;
+    Framebuffer image(40, 30);
+    raster::DepthBuffer depth;
+    raster::ModelStage(std::make_shared<const raster::Model>(model), view, 40, 30).render(image, depth);
+    return image;
+}
+
+std::string error_of(const std::string& obj) {
+    try {
+        (void)raster::parse_obj(obj, "");
+    } catch (const std::runtime_error& error) {
+        return error.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST(ModelFraming, AModelAThousandthOrAMillionTimesTheSizeOrFarFromTheOriginLooksTheSame) {
+    for (const bool orthographic : {false, true}) {
+        const Framebuffer unit = picture_of(1.0, 0.0, orthographic);
+        // Both colours show: the picture is not blank, and depth has chosen between them.
+        int green = 0, red = 0;
+        for (int y = 0; y < unit.height(); ++y) {
+            for (int x = 0; x < unit.width(); ++x) {
+                green += unit.pixel(x, y) == raster::Rgb{0, 255, 0} ? 1 : 0;
+                red += unit.pixel(x, y) == raster::Rgb{255, 0, 0} ? 1 : 0;
+            }
+        }
+        EXPECT_GT(green, 100);
+        EXPECT_GT(red, 50);
+        EXPECT_EQ(picture_of(0.008, 0.0, orthographic), unit) << "a quad 0.008 across";
+        EXPECT_EQ(picture_of(8000.0, 0.0, orthographic), unit) << "the same a million times larger";
+        EXPECT_EQ(picture_of(8000.0, 1e7, orthographic), unit) << "and ten million units from the origin";
+    }
+}
+
+TEST(ModelFraming, FacesTooSmallForFloatsAtTheirDistanceAreRefusedWithTheReason) {
+    // 0.008 across at 10^7: 32-bit floats there step by 1, so the square has no area left.
+    EXPECT_EQ(error_of("v 1e7 1e7 1e7\nv 10000000.008 1e7 1e7\nv 10000000.008 10000000.008 1e7\nf 1 2 3\n"),
+              "<memory>: every face has no area (stored as 32-bit floats, coordinates near 1e+07 step by 1: move the "
+              "model nearer the origin)");
+}
