@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
                "  animated-scene --scene flythrough --width 640 --height 360 fly.webp");
     ExportOptions options{"animated-scene.webp"};
     add_export_options(app, options);
+    add_samples_option(app, options, 1);
     std::string name;
     add_scene_option(app, name);
     int frames = 0;

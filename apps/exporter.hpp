@@ -1,6 +1,7 @@
 #pragma once
 
 #include <raster/io/output_file.hpp>
+#include <raster/render/samples.hpp>
 #include <raster/render/scene.hpp>
 #include <raster/scenes/scenes.hpp>
 #include <raster/io/webp.hpp>
@@ -30,6 +31,7 @@ struct ExportOptions {
     raster::OutputPolicy policy;
     raster::AnimationPath encoder = raster::AnimationPath::parallel;
     int threads = 0;  // for rendering bands and encoding frames; 0: one per core
+    int samples = 1;  // per pixel, for anti-aliasing (--samples)
     std::vector<raster::InputRecord> inputs;  // every file read: no output may replace one
     std::optional<ImageFormat> format;  // default: PNG for a name ending in .png, else WebP
     std::string frames_dir;  // an animation written as numbered PNG frames into this directory
@@ -41,7 +43,7 @@ struct ExportOptions {
     // More threads than the cores this process may run on would only hold memory: the count
     // asked for is capped there, and 0 takes one per such core.
     [[nodiscard]] int threads_in_use() const;
-    [[nodiscard]] raster::RenderOptions render_options() const { return {threads_in_use()}; }
+    [[nodiscard]] raster::RenderOptions render_options() const { return {threads_in_use(), samples}; }
 };
 
 // A CLI11 app whose help is wrapped to 80 columns and whose --version names the program.
@@ -79,6 +81,8 @@ CLI::Option* add_choice_option(CLI::App& app, const std::string& name, Value& va
         ->option_text(CLI::detail::join(names, "|") + " [" + default_name + "]");
 }
 void add_style_option(CLI::App& app, raster::CubeStyle& style, const std::string& line_colour);
+// --samples 1|2|4|8|16, anti-aliasing; `default_samples` is the program's default.
+void add_samples_option(CLI::App& app, ExportOptions& options, int default_samples);
 
 // Progress on stderr while frames are made: on a terminal, or everywhere with --progress.
 class Progress {

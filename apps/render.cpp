@@ -127,7 +127,7 @@ std::function<FinishedPicture()> render_model(const CLI::App& app, ExportOptions
     const raster::ModelStage stage(loaded.model, plan.view, options.width, options.height);
     const auto draw = [&](raster::Framebuffer& frame, double turn, std::vector<std::uint8_t>& alpha) {
         stage.render(frame, renderer, turn);
-        if (plan.view.transparent) alpha = renderer.depth().coverage();
+        if (plan.view.transparent) alpha = renderer.coverage();
     };
     const std::string tail = ", " + std::to_string(loaded.triangles) + " triangles, ";
     const double loading = loaded.seconds;
@@ -180,6 +180,7 @@ int main(int argc, char** argv) {
         ->option_text("MODEL");
     ExportOptions options{"MODEL.webp (or .png with --format png), in the working directory"};
     add_export_options(app, options);
+    add_samples_option(app, options, 1);
     std::vector<std::string> more_models;
     app.add_option("more", more_models, "With --output-dir: more models, each drawn into DIR as its name with .webp or .png")
         ->option_text("MODEL...");

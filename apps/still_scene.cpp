@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
                "  still-scene --scene materials --detail auto --width 1280 --height 720 m.webp");
     ExportOptions options{"still-scene.webp"};
     add_export_options(app, options);
+    add_samples_option(app, options, 1);
     std::string name;
     add_scene_option(app, name);
     bool automatic = false;

@@ -49,7 +49,7 @@ glm::dvec4 PerspectiveCamera::clip_from_view(glm::dvec3 view) const noexcept {
 
 glm::dvec2 PerspectiveCamera::screen_from_clip(glm::dvec4 clip) const noexcept {
     const double x_ndc = clip.x / clip.w, y_ndc = clip.y / clip.w;
-    return {(x_ndc + 1.0) * width_ / 2.0 - 0.5, (1.0 - y_ndc) * height_ / 2.0 - 0.5};
+    return {(x_ndc + 1.0) * width_ / 2.0 - 0.5 - offset_.x, (1.0 - y_ndc) * height_ / 2.0 - 0.5 - offset_.y};
 }
 
 }  // namespace raster

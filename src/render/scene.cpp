@@ -3,10 +3,13 @@
 #include <raster/rasterize/draw_mesh.hpp>
 #include <raster/shade/textured_shaders.hpp>
 
+#include <raster/render/samples.hpp>
+
 #include "camera/clipped_facets.hpp"
 #include "geometry/posing.hpp"
 #include "rasterize/strip_bins.hpp"
 #include "rasterize/worker_team.hpp"
+#include "render/sample_resolve.hpp"
 
 #include <algorithm>
 #include <numeric>
@@ -180,27 +183,59 @@ std::size_t draw(Framebuffer& framebuffer, const PerspectiveScene& scene, DepthB
         });
 }
 
+// Draws the scene once at each of `samples` sample positions and resolves the passes into
+// `framebuffer`; one sample is the plain draw. `alpha`, for a scene that keeps depth and more than
+// one sample, receives the share of samples covered.
+template <typename Camera>
+std::size_t draw_samples(Framebuffer& framebuffer, const BasicScene<Camera>& scene, DepthBuffer& depth, detail::WorkerTeam& team,
+                         int samples, std::vector<std::uint8_t>* alpha) {
+    const std::span<const glm::vec2> offsets = sample_offsets(samples);
+    if (offsets.size() == 1) return draw(framebuffer, scene, depth, team);
+    detail::SampleResolve resolve(framebuffer.width(), framebuffer.height(), scene.keep_depth);
+    Framebuffer pass(framebuffer.width(), framebuffer.height());
+    BasicScene<Camera> at = scene;
+    std::size_t drawn = 0;
+    for (const glm::vec2 offset : offsets) {
+        at.camera = scene.camera.sampled_at(glm::dvec2(offset));
+        drawn = draw(pass, at, depth, team);
+        if (scene.keep_depth) {
+            resolve.add(pass, depth.coverage());
+        } else {
+            resolve.add(pass);
+        }
+    }
+    resolve.resolve(framebuffer, scene.background, alpha);
+    return drawn;
+}
+
 }  // namespace
 
 std::size_t render(Framebuffer& framebuffer, const Scene& scene, DepthBuffer& depth, RenderOptions options) {
+    (void)sample_offsets(options.samples);  // refused before any thread starts
     detail::WorkerTeam team(std::min(thread_count(options.threads), framebuffer.height()));
-    return draw(framebuffer, scene, depth, team);
+    return draw_samples(framebuffer, scene, depth, team, options.samples, nullptr);
 }
 
 std::size_t render(Framebuffer& framebuffer, const PerspectiveScene& scene, DepthBuffer& depth, RenderOptions options) {
+    (void)sample_offsets(options.samples);
     detail::WorkerTeam team(std::min(thread_count(options.threads), framebuffer.height()));
-    return draw(framebuffer, scene, depth, team);
+    return draw_samples(framebuffer, scene, depth, team, options.samples, nullptr);
 }
 
-Renderer::Renderer(RenderOptions options) : team_(std::make_unique<detail::WorkerTeam>(thread_count(options.threads))) {}
+Renderer::Renderer(RenderOptions options)
+    : team_(std::make_unique<detail::WorkerTeam>(thread_count(options.threads))),
+      samples_(static_cast<int>(sample_offsets(options.samples).size())) {}
 Renderer::~Renderer() = default;
 Renderer::Renderer(Renderer&&) noexcept = default;
 Renderer& Renderer::operator=(Renderer&&) noexcept = default;
 int Renderer::threads() const noexcept { return team_->size(); }
-std::size_t Renderer::render(Framebuffer& framebuffer, const Scene& scene) { return draw(framebuffer, scene, depth_, *team_); }
-std::size_t Renderer::render(Framebuffer& framebuffer, const PerspectiveScene& scene) {
-    return draw(framebuffer, scene, depth_, *team_);
+std::size_t Renderer::render(Framebuffer& framebuffer, const Scene& scene) {
+    return draw_samples(framebuffer, scene, depth_, *team_, samples_, &coverage_);
 }
+std::size_t Renderer::render(Framebuffer& framebuffer, const PerspectiveScene& scene) {
+    return draw_samples(framebuffer, scene, depth_, *team_, samples_, &coverage_);
+}
+std::vector<std::uint8_t> Renderer::coverage() const { return samples_ == 1 ? depth_.coverage() : coverage_; }
 
 PerspectiveScene in_perspective(const Scene& scene, int width, int height, double fov_degrees) {
     if (!(fov_degrees > 0.0 && fov_degrees < 180.0)) {

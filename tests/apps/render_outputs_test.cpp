@@ -138,3 +138,29 @@ TEST(RenderOutputs, OutputsThatCannotBeAreOneLine) {
     EXPECT_EQ(result.exit_code, 1);
     EXPECT_NE(result.err.find("0000.png"), std::string::npos) << result.err;
 }
+
+TEST(RenderOutputs, SamplesSmoothEdgesInAnyOptionOrderAndOnlyStandardCountsAreTaken) {
+    const ScratchDir dir;
+    const auto obj = test_support::write_crate_on_floor(dir.path());
+    auto result = run(kRender, {"--samples", "4", "crate.obj", "--width", "60", "--height", "40", "before.png"}, dir.path());
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    result = run(kRender, {"crate.obj", "after.png", "--width=60", "--height=40", "--samples=4"}, dir.path());
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    const Framebuffer smooth = read_png(dir / "before.png").image;
+    EXPECT_EQ(read_png(dir / "after.png").image, smooth);
+    // The library's picture at four samples, which differs from one sample's only along edges.
+    Framebuffer expected(60, 40);
+    raster::Renderer renderer({.threads = 1, .samples = 4});
+    raster::ModelStage(std::make_shared<const raster::Model>(raster::read_obj(obj)), {}, 60, 40).render(expected, renderer);
+    EXPECT_EQ(smooth, expected);
+    EXPECT_NE(smooth, rendered(obj, 60, 40));
+    // A transparent background takes the share of samples covered as alpha.
+    result = run(kRender, {"crate.obj", "--background", "none", "--samples", "16", "--width", "60", "--height", "40", "clear.png"}, dir.path());
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    const raster::DecodedPng clear = read_png(dir / "clear.png");
+    EXPECT_TRUE(std::any_of(clear.alpha.begin(), clear.alpha.end(), [](std::uint8_t a) { return a > 0 && a < 255; }));
+    result = run(kRender, {"crate.obj", "--samples", "3", "x.png"}, dir.path());
+    EXPECT_EQ(result.exit_code, 2);
+    EXPECT_EQ(result.err, "render: --samples: '3' is not one of 1, 2, 4, 8, 16 (see --help)\n");
+    EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
+}

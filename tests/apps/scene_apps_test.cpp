@@ -55,6 +55,21 @@ TEST(StillSceneApp, PerspectiveLooksThroughAPinholeKeepingTheFraming) {
     EXPECT_NE(written, still_of("point-light", 96, 72));
 }
 
+TEST(StillSceneApp, SamplesDrawTheSceneAtEachSamplePositionDiaryAndSeedAlike) {
+    const ScratchDir dir;
+    auto result = run(kStillScene, {"--scene", "torus", "--samples", "4", "--width", "96", "--height", "72", "t.webp"}, dir.path());
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    Framebuffer expected(96, 72);
+    raster::DepthBuffer depth;
+    raster::render(expected, raster::DiaryScene("torus").still(96, 72), depth, {.samples = 4});
+    const Framebuffer written = raster::read_webp(dir / "t.webp").frames.at(0).image;
+    EXPECT_EQ(written, expected);
+    EXPECT_NE(written, still_of("torus", 96, 72));
+    result = run(kAnimatedScene, {"--scene=ptah", "--frames", "2", "--samples=2", "--width", "64", "--height", "48", "p.webp"}, dir.path());
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    EXPECT_EQ(raster::read_webp(dir / "p.webp").frames.size(), 2U);
+}
+
 TEST(AnimatedSceneApp, WritesTheScenesOwnFrameCountTwentyMillisecondsApart) {
     const ScratchDir dir;
     const auto result = run(kAnimatedScene, {"--scene", "orbit", "--width", "64", "--height", "48", "--effort", "fast"}, dir.path());

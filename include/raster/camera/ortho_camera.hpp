@@ -52,6 +52,14 @@ public:
         return moved;
     }
 
+    // The same camera shifted so that each pixel centre sees what lies `offset` pixels from it
+    // (x right, y down): one sample position of an anti-aliased frame (raster/render/samples.hpp).
+    [[nodiscard]] OrthoCamera sampled_at(glm::dvec2 offset) const noexcept {
+        OrthoCamera shifted = *this;
+        shifted.centre_ -= offset;
+        return shifted;
+    }
+
     // Pixels per world unit: (min(width, height) - 1) / 2.
     [[nodiscard]] double scale() const noexcept { return scale_; }
 

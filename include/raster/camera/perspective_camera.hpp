@@ -46,6 +46,13 @@ public:
     [[nodiscard]] glm::vec3 eye() const noexcept { return view_.eye(); }
     [[nodiscard]] glm::vec3 direction() const noexcept { return view_.direction(); }
     [[nodiscard]] const Lens& lens() const noexcept { return lens_; }
+    // The same camera shifted so that each pixel centre sees what lies `offset` pixels from it
+    // (x right, y down): one sample position of an anti-aliased frame (raster/render/samples.hpp).
+    [[nodiscard]] PerspectiveCamera sampled_at(glm::dvec2 offset) const noexcept {
+        PerspectiveCamera shifted = *this;
+        shifted.offset_ += offset;
+        return shifted;
+    }
     [[nodiscard]] int width() const noexcept { return width_; }
     [[nodiscard]] int height() const noexcept { return height_; }
 
@@ -58,6 +65,7 @@ private:
     Lens lens_;
     double x_scale_;  // 1 / (aspect tan(fov/2))
     double y_scale_;  // 1 / tan(fov/2)
+    glm::dvec2 offset_{0.0, 0.0};  // the sample position, in pixels from the centre
 };
 
 }  // namespace raster

@@ -12,6 +12,7 @@
 
 #include <memory>
 #include <optional>
+#include <cstdint>
 #include <span>
 #include <variant>
 #include <vector>
@@ -71,6 +72,9 @@ template <typename Camera>
 // The picture is the same, bit for bit, whatever the count (doc/conventions.md#threads).
 struct RenderOptions {
     int threads = 1;  // 0: one per core; counts above kMaxThreads are taken as kMaxThreads
+    // Samples per pixel, 1, 2, 4, 8 or 16: the frame is drawn once at each standard sample
+    // position and the passes averaged in linear light (raster/render/samples.hpp).
+    int samples = 1;
 };
 inline constexpr int kMaxThreads = 256;
 
@@ -79,7 +83,8 @@ class WorkerTeam;
 }
 
 // Clears to the background and draws every object; `depth` is prepared and used only when the
-// scene needs it, so a lone convex mesh never touches it. Returns the facets drawn.
+// scene needs it, so a lone convex mesh never touches it. Returns the facets drawn (in the last
+// sample pass). Throws std::invalid_argument for a thread or sample count out of range.
 std::size_t render(Framebuffer& framebuffer, const Scene& scene, DepthBuffer& depth, RenderOptions options = {});
 // The same in perspective: triangles are clipped to the near and far planes (and a guard band),
 // attributes interpolated through 1/w, and the viewer's direction taken at each point
@@ -99,12 +104,19 @@ public:
     std::size_t render(Framebuffer& framebuffer, const Scene& scene);
     std::size_t render(Framebuffer& framebuffer, const PerspectiveScene& scene);
     [[nodiscard]] int threads() const noexcept;
-    // The depth of the last frame drawn, for a scene that needed depth.
+    [[nodiscard]] int samples() const noexcept { return samples_; }
+    // The depth of the last frame drawn (of its last sample pass), for a scene that needed depth.
     [[nodiscard]] const DepthBuffer& depth() const noexcept { return depth_; }
+    // For a scene that keeps depth, one byte per pixel of the last frame: the share of its
+    // samples a surface covers, 0..255, the alpha of a transparent background. A pixel partly
+    // covered then holds the mean colour of the surfaces alone, not mixed with the background.
+    [[nodiscard]] std::vector<std::uint8_t> coverage() const;
 
 private:
     std::unique_ptr<detail::WorkerTeam> team_;
     DepthBuffer depth_;
+    int samples_ = 1;
+    std::vector<std::uint8_t> coverage_;  // of the last frame drawn in more than one pass
 };
 
 // The scene through a pinhole of vertical field of view `fov_degrees` (0 < fov < 180): the eye

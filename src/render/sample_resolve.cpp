@@ -1,0 +1,52 @@
+#include "render/sample_resolve.hpp"
+
+#include <raster/shade/colour.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace raster::detail {
+
+SampleResolve::SampleResolve(int width, int height, bool with_alpha)
+    : width_(width), height_(height), with_alpha_(with_alpha),
+      sums_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3, 0.0F) {
+    for (int byte = 0; byte < 256; ++byte) linear_[static_cast<std::size_t>(byte)] = static_cast<float>(linear_from_srgb_channel(byte / 255.0));
+    if (with_alpha_) covered_.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0);
+}
+
+void SampleResolve::add(const Framebuffer& pass, std::span<const std::uint8_t> coverage) {
+    if (pass.width() != width_ || pass.height() != height_) throw std::invalid_argument("a sample pass differs in size from its frame");
+    const std::size_t pixels = static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_);
+    if (with_alpha_ && coverage.size() != pixels) throw std::invalid_argument("a sample pass needs its coverage for a transparent frame");
+    const std::uint8_t* bytes = pass.bytes().data();
+    for (std::size_t i = 0; i < pixels; ++i) {
+        if (with_alpha_) {
+            if (coverage[i] == 0) continue;
+            ++covered_[i];
+        }
+        for (std::size_t c = 0; c < 3; ++c) sums_[i * 3 + c] += linear_[bytes[i * 3 + c]];
+    }
+    ++passes_;
+}
+
+void SampleResolve::resolve(Framebuffer& out, Rgb background, std::vector<std::uint8_t>* alpha) const {
+    if (out.width() != width_ || out.height() != height_) throw std::invalid_argument("a resolved frame differs in size from its passes");
+    const std::size_t pixels = static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_);
+    if (alpha != nullptr) alpha->assign(pixels, 255);
+    std::uint8_t* bytes = out.pixels();
+    for (std::size_t i = 0; i < pixels; ++i) {
+        const int count = with_alpha_ ? covered_[i] : passes_;
+        if (count == 0) {
+            bytes[i * 3] = background.r, bytes[i * 3 + 1] = background.g, bytes[i * 3 + 2] = background.b;
+        } else {
+            const float share = 1.0F / static_cast<float>(count);
+            for (std::size_t c = 0; c < 3; ++c) bytes[i * 3 + c] = srgb_byte_from_linear(sums_[i * 3 + c] * share);
+        }
+        if (alpha != nullptr && with_alpha_) {
+            (*alpha)[i] = static_cast<std::uint8_t>(std::lround(255.0 * count / std::max(passes_, 1)));
+        }
+    }
+}
+
+}  // namespace raster::detail
