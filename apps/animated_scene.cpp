@@ -13,7 +13,7 @@ int main(int argc, char** argv) {
                "  animated-scene --scene flythrough --width 640 --height 360 fly.webp");
     ExportOptions options{"animated-scene.webp"};
     add_export_options(app, options);
-    add_samples_option(app, options, 1);
+    add_samples_option(app, options, "1 for the diary's scenes, " + std::to_string(raster::kSmoothSamples) + " for the seeds'");
     std::string name;
     add_scene_option(app, name);
     int frames = 0;
@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
 
     return run_exporter(app, options, argc, argv, [&] {
         check_seed_options(name, automatic, fov);
+        if (options.samples == 0) options.samples = raster::is_seed_scene(name) ? raster::kSmoothSamples : 1;
         if (raster::is_seed_scene(name)) {
             const raster::SeedScene seed(name);
             const int count = frames > 0 ? frames : seed.info().frames;

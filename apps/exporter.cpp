@@ -204,15 +204,15 @@ void add_export_options(CLI::App& app, ExportOptions& options) {
     add_output_options(app, options);
 }
 
-void add_samples_option(CLI::App& app, ExportOptions& options, int default_samples) {
-    options.samples = default_samples;
+void add_samples_option(CLI::App& app, ExportOptions& options, const std::string& default_text) {
+    options.samples = 0;
     std::vector<std::pair<std::string, int>> counts;
     for (const int count : raster::kSampleCounts) counts.emplace_back(std::to_string(count), count);
     add_choice_option<int>(app, "--samples", options.samples, counts,
                            "Samples per pixel, for smooth edges: the frame is drawn once at each of the standard "
                            "(Direct3D and Vulkan) sample positions and the passes are averaged in linear light, so "
                            "N samples take about N times as long. 1 draws each pixel at its centre, with stair-step edges",
-                           std::to_string(default_samples));
+                           default_text);
 }
 
 void add_style_option(CLI::App& app, raster::CubeStyle& style, const std::string& line_colour) {

@@ -31,7 +31,7 @@ struct ExportOptions {
     raster::OutputPolicy policy;
     raster::AnimationPath encoder = raster::AnimationPath::parallel;
     int threads = 0;  // for rendering bands and encoding frames; 0: one per core
-    int samples = 1;  // per pixel, for anti-aliasing (--samples)
+    int samples = 1;  // per pixel, for anti-aliasing (--samples); 0 until a program's default is known
     std::vector<raster::InputRecord> inputs;  // every file read: no output may replace one
     std::optional<ImageFormat> format;  // default: PNG for a name ending in .png, else WebP
     std::string frames_dir;  // an animation written as numbered PNG frames into this directory
@@ -81,8 +81,9 @@ CLI::Option* add_choice_option(CLI::App& app, const std::string& name, Value& va
         ->option_text(CLI::detail::join(names, "|") + " [" + default_name + "]");
 }
 void add_style_option(CLI::App& app, raster::CubeStyle& style, const std::string& line_colour);
-// --samples 1|2|4|8|16, anti-aliasing; `default_samples` is the program's default.
-void add_samples_option(CLI::App& app, ExportOptions& options, int default_samples);
+// --samples 1|2|4|8|16, anti-aliasing. Left 0 when not given, for the program to choose its
+// default (`default_text` says which in the help).
+void add_samples_option(CLI::App& app, ExportOptions& options, const std::string& default_text);
 
 // Progress on stderr while frames are made: on a terminal, or everywhere with --progress.
 class Progress {

@@ -180,7 +180,7 @@ int main(int argc, char** argv) {
         ->option_text("MODEL");
     ExportOptions options{"MODEL.webp (or .png with --format png), in the working directory"};
     add_export_options(app, options);
-    add_samples_option(app, options, 1);
+    add_samples_option(app, options, std::to_string(raster::kSmoothSamples));
     std::vector<std::string> more_models;
     app.add_option("more", more_models, "With --output-dir: more models, each drawn into DIR as its name with .webp or .png")
         ->option_text("MODEL...");
@@ -269,6 +269,7 @@ int main(int argc, char** argv) {
             plan.texture = std::make_shared<const raster::Texture>(
                 raster::read_texture(plan.texture_path, raster::kMaxTextureTexels, plan.obj.confine, &plan.texture_inputs));
         }
+        if (options.samples == 0) options.samples = raster::kSmoothSamples;
         raster::Renderer renderer(options.render_options());
         // Named outputs take their format from the name; made names from --format, else WebP.
         const bool named = output_dir.empty() && app.count("output") + app.count("--output") > 0;

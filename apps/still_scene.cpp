@@ -12,7 +12,7 @@ int main(int argc, char** argv) {
                "  still-scene --scene materials --detail auto --width 1280 --height 720 m.webp");
     ExportOptions options{"still-scene.webp"};
     add_export_options(app, options);
-    add_samples_option(app, options, 1);
+    add_samples_option(app, options, "1 for the diary's scenes, " + std::to_string(raster::kSmoothSamples) + " for the seeds'");
     std::string name;
     add_scene_option(app, name);
     bool automatic = false;
@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
 
     return run_exporter(app, options, argc, argv, [&] {
         check_seed_options(name, automatic, fov);
+        if (options.samples == 0) options.samples = raster::is_seed_scene(name) ? raster::kSmoothSamples : 1;
         if (raster::is_seed_scene(name)) {
             const raster::SeedScene seed(name);
             return export_still(app, options, [&](raster::Framebuffer& frame) {

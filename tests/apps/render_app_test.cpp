@@ -1,4 +1,5 @@
 // `render` as a user runs it: stills, turntables, options and bad models.
+#include <raster/render/samples.hpp>
 #include <raster/render/model_scene.hpp>
 #include <raster/io/obj_file.hpp>
 #include <raster/io/webp.hpp>
@@ -20,7 +21,7 @@ namespace {
 Framebuffer rendered(const std::filesystem::path& obj, const raster::ModelView& view, int width, int height, double turn = 0.0) {
     Framebuffer image(width, height);
     raster::DepthBuffer depth;
-    raster::ModelStage(std::make_shared<const raster::Model>(raster::read_obj(obj)), view, width, height).render(image, depth, turn);
+    raster::ModelStage(std::make_shared<const raster::Model>(raster::read_obj(obj)), view, width, height).render(image, depth, turn, {.samples = raster::kSmoothSamples});
     return image;
 }
 

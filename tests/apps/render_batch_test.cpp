@@ -1,4 +1,5 @@
 // `render a.obj b.glb c.stl --output-dir thumbs`: many models in one run, each on its own.
+#include <raster/render/samples.hpp>
 #include <raster/render/model_scene.hpp>
 #include <raster/io/model_file.hpp>
 #include <raster/io/webp.hpp>
@@ -20,7 +21,7 @@ namespace {
 Framebuffer rendered(const std::filesystem::path& model, int width, int height) {
     Framebuffer image(width, height);
     raster::DepthBuffer depth;
-    raster::ModelStage(std::make_shared<const raster::Model>(raster::read_model(model)), {}, width, height).render(image, depth);
+    raster::ModelStage(std::make_shared<const raster::Model>(raster::read_model(model)), {}, width, height).render(image, depth, 0.0, {.samples = raster::kSmoothSamples});
     return image;
 }
 

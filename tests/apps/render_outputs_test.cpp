@@ -1,4 +1,5 @@
 // `render`'s outputs: WebP or PNG, opaque or transparent, one animation or numbered frames.
+#include <raster/render/samples.hpp>
 #include <raster/render/model_scene.hpp>
 #include <raster/io/obj_file.hpp>
 #include <raster/io/png.hpp>
@@ -21,10 +22,11 @@ namespace {
 
 raster::DecodedPng read_png(const std::filesystem::path& path) { return raster::decode_png(test_support::read_bytes(path), 1 << 20); }
 
-Framebuffer rendered(const std::filesystem::path& obj, int width, int height, double turn = 0.0) {
+// What `render` draws of the OBJ, by default at its default samples.
+Framebuffer rendered(const std::filesystem::path& obj, int width, int height, double turn = 0.0, int samples = raster::kSmoothSamples) {
     Framebuffer image(width, height);
     raster::DepthBuffer depth;
-    raster::ModelStage(std::make_shared<const raster::Model>(raster::read_obj(obj)), {}, width, height).render(image, depth, turn);
+    raster::ModelStage(std::make_shared<const raster::Model>(raster::read_obj(obj)), {}, width, height).render(image, depth, turn, {.samples = samples});
     return image;
 }
 
@@ -52,14 +54,15 @@ TEST(RenderOutputs, BackgroundNoneIsTransparentInWebpAndPng) {
     const ScratchDir dir;
     const auto obj = test_support::write_crate_on_floor(dir.path());
     for (const std::string name : {"clear.webp", "clear.png"}) {
-        const auto result = run(kRender, {"--background", "none", "crate.obj", name, "--width", "60", "--height", "40"}, dir.path());
+        // One sample: a pixel is surface or background, alpha 255 or 0 (SamplesSmoothEdges... has the rest).
+        const auto result = run(kRender, {"--background", "none", "crate.obj", name, "--width", "60", "--height", "40", "--samples", "1"}, dir.path());
         ASSERT_EQ(result.exit_code, 0) << result.err;
         EXPECT_NE(result.out.find("60x40 still on a transparent background"), std::string::npos) << result.out;
     }
     const raster::DecodedPng png = read_png(dir / "clear.png");
     const raster::DecodedFrame webp = raster::read_webp(dir / "clear.webp").frames.at(0);
     EXPECT_EQ(webp.alpha, png.alpha);
-    const Framebuffer opaque = rendered(obj, 60, 40);
+    const Framebuffer opaque = rendered(obj, 60, 40, 0.0, 1);
     const raster::Rgb background{48, 52, 60};
     int clear = 0;
     for (int y = 0; y < 40; ++y) {
@@ -139,7 +142,7 @@ TEST(RenderOutputs, OutputsThatCannotBeAreOneLine) {
     EXPECT_NE(result.err.find("0000.png"), std::string::npos) << result.err;
 }
 
-TEST(RenderOutputs, SamplesSmoothEdgesInAnyOptionOrderAndOnlyStandardCountsAreTaken) {
+TEST(RenderOutputs, SamplesSmoothEdgesByDefaultInAnyOptionOrderAndOnlyStandardCountsAreTaken) {
     const ScratchDir dir;
     const auto obj = test_support::write_crate_on_floor(dir.path());
     auto result = run(kRender, {"--samples", "4", "crate.obj", "--width", "60", "--height", "40", "before.png"}, dir.path());
@@ -148,12 +151,15 @@ TEST(RenderOutputs, SamplesSmoothEdgesInAnyOptionOrderAndOnlyStandardCountsAreTa
     ASSERT_EQ(result.exit_code, 0) << result.err;
     const Framebuffer smooth = read_png(dir / "before.png").image;
     EXPECT_EQ(read_png(dir / "after.png").image, smooth);
+    result = run(kRender, {"crate.obj", "--width=60", "--height=40", "default.png"}, dir.path());
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    EXPECT_EQ(read_png(dir / "default.png").image, smooth);  // four samples unless told
     // The library's picture at four samples, which differs from one sample's only along edges.
     Framebuffer expected(60, 40);
     raster::Renderer renderer({.threads = 1, .samples = 4});
     raster::ModelStage(std::make_shared<const raster::Model>(raster::read_obj(obj)), {}, 60, 40).render(expected, renderer);
     EXPECT_EQ(smooth, expected);
-    EXPECT_NE(smooth, rendered(obj, 60, 40));
+    EXPECT_NE(smooth, rendered(obj, 60, 40, 0.0, 1));
     // A transparent background takes the share of samples covered as alpha.
     result = run(kRender, {"crate.obj", "--background", "none", "--samples", "16", "--width", "60", "--height", "40", "clear.png"}, dir.path());
     ASSERT_EQ(result.exit_code, 0) << result.err;

@@ -1,4 +1,5 @@
 // still-scene and animated-scene as a user runs them.
+#include <raster/render/samples.hpp>
 #include <raster/scenes/diary_scenes.hpp>
 #include <raster/scenes/scenes.hpp>
 #include <raster/scenes/seed_scenes.hpp>
@@ -136,7 +137,7 @@ TEST(StillSceneApp, TheSeedScenesRenderInTheirOwnCamerasAndRefuseDiaryOptions) {
     ASSERT_EQ(result.exit_code, 0) << result.err;
     Framebuffer expected(160, 120);
     raster::DepthBuffer depth;
-    raster::render(expected, raster::SeedScene("ptah").still(160, 120), depth);
+    raster::render(expected, raster::SeedScene("ptah").still(160, 120), depth, {.samples = raster::kSmoothSamples});
     EXPECT_EQ(raster::read_webp(dir / "p.webp").frames.at(0).image, expected);
     const auto perspective = run(kStillScene, {"--scene", "ptah", "--perspective", "40", "q.webp"}, dir.path());
     EXPECT_EQ(perspective.exit_code, 1);
@@ -156,6 +157,6 @@ TEST(AnimatedSceneApp, TheFlightIsAnAnimationOfItsOwnFrames) {
     ASSERT_EQ(clip.frames.size(), 4U);
     Framebuffer expected(64, 48);
     raster::DepthBuffer depth;
-    raster::render(expected, raster::SeedScene("flythrough").frame(64, 48, 2, 4), depth);
+    raster::render(expected, raster::SeedScene("flythrough").frame(64, 48, 2, 4), depth, {.samples = raster::kSmoothSamples});
     EXPECT_EQ(clip.frames[2].image, expected);
 }

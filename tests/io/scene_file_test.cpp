@@ -1,6 +1,7 @@
 // glTF 2.0, STL and PLY through the Open Asset Import Library: files the tests write, and the real
 // and broken files of Debian's assimp-testmodels.
 #include <raster/io/model_file.hpp>
+#include <raster/render/samples.hpp>
 #include <raster/render/model_scene.hpp>
 
 #include "support/golden.hpp"
@@ -30,7 +31,7 @@ const std::filesystem::path kTestModels = "/usr/share/assimp/models";
 Framebuffer drawn(const Model& model, raster::ModelView view = {}) {
     Framebuffer image(160, 120);
     raster::DepthBuffer depth;
-    raster::ModelStage(std::make_shared<const Model>(model), view, image.width(), image.height()).render(image, depth);
+    raster::ModelStage(std::make_shared<const Model>(model), view, image.width(), image.height()).render(image, depth, 0.0, {.samples = raster::kSmoothSamples});
     return image;
 }
 

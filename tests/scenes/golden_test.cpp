@@ -1,3 +1,4 @@
+#include <raster/render/samples.hpp>
 #include <raster/scenes/diary_scenes.hpp>
 #include <raster/scenes/scenes.hpp>
 #include <raster/io/webp.hpp>
@@ -151,8 +152,8 @@ TEST(Golden, ReadmeTorusIsWhatAnimatedSceneDrawsToday) {
     EXPECT_EQ(shown, 180);
 }
 
-// What `render` draws of a model it reads: a textured crate on a floor, each shading, the
-// orthographic view, a turntable frame, a low eye, and nearest filtering.
+// What `render` draws of a model it reads, at its default samples: a textured crate on a floor,
+// each shading, the orthographic view, a turntable frame, a low eye, and nearest filtering.
 TEST(Golden, ModelsThroughEachShadingAndView) {
     const test_support::ScratchDir dir;
     const auto model = std::make_shared<const raster::Model>(raster::read_obj(test_support::write_crate_on_floor(dir.path())));
@@ -184,7 +185,7 @@ TEST(Golden, ModelsThroughEachShadingAndView) {
         if (c.name == "nearest") {
             for (raster::ModelPart& part : copy->parts) part.sampler.filter = raster::TextureFilter::nearest;
         }
-        raster::ModelStage(copy, c.view, image.width(), image.height()).render(image, depth, c.turn);
+        raster::ModelStage(copy, c.view, image.width(), image.height()).render(image, depth, c.turn, {.samples = raster::kSmoothSamples});
         EXPECT_TRUE(matches_snapshot(image, "models/crate-" + c.name));
     }
 }
@@ -229,20 +230,20 @@ TEST(Golden, ConcaveFacesAsTheirOutlines) {
     EXPECT_TRUE(matches_snapshot(image, "models/concave-faces"));
 }
 
-// The Ptah and raster-engine scenes: stills, and the flight every hundredth frame.
+// The Ptah and raster-engine scenes at their default samples: stills, and the flight every hundredth frame.
 TEST(Golden, SeedScenes) {
     for (const raster::SeedSceneInfo& info : raster::seed_scenes()) {
         Framebuffer image(320, 240);
         raster::DepthBuffer depth;
         const raster::SeedScene scene(info.name);
-        raster::render(image, scene.still(image.width(), image.height()), depth);
+        raster::render(image, scene.still(image.width(), image.height()), depth, {.samples = raster::kSmoothSamples});
         EXPECT_TRUE(matches_snapshot(image, "seeds/" + std::string(info.name)));
     }
     const raster::SeedScene fly("flythrough");
     for (const int i : {100, 200, 300}) {
         Framebuffer image(160, 120);
         raster::DepthBuffer depth;
-        raster::render(image, fly.frame(image.width(), image.height(), i, fly.info().frames), depth);
+        raster::render(image, fly.frame(image.width(), image.height(), i, fly.info().frames), depth, {.samples = raster::kSmoothSamples});
         EXPECT_TRUE(matches_snapshot(image, "seeds/flythrough-" + std::to_string(i)));
     }
 }

@@ -1,0 +1,16 @@
+# Draws antialias.svg from antialias-lab's CSV: gnuplot -e "dir='doc/lab'" lab/antialias_chart.gp
+if (!exists("dir")) dir = "doc/lab"
+set datafile separator ","
+set terminal svg size 900,560 dynamic enhanced font "sans,12" background "white"
+set grid lw 0.5 lc "#dddddd"
+set key top right box opaque autotitle columnhead
+set output sprintf("%s/antialias.svg", dir)
+set title "Anti-aliasing: coverage error against the exact pixel area, and the cost of a frame" font ",14"
+set xlabel "milliseconds per 800 x 600 frame of the diary's torus, one thread (lower is better)"
+set ylabel "mean |coverage error| over edge pixels (lower is better)"
+set logscale xy
+set xrange [5:600]
+set yrange [0.001:1]
+file = sprintf("%s/antialias-time.csv", dir)
+plot for [k=4:9] file using 2:k with linespoints lw 2 pt (k + 1) ps 1.2 title columnheader(k), \
+     file using 2:4:(sprintf("%d", $1)) with labels offset char 0, char 1.2 font ",10" notitle
