@@ -153,7 +153,7 @@ TEST(Golden, ReadmeTorusIsWhatAnimatedSceneDrawsToday) {
 }
 
 // What `render` draws of a model it reads, at its default samples: a textured crate on a floor,
-// each shading, the orthographic view, a turntable frame, a low eye, and nearest filtering.
+// each shading, the orthographic view, a turntable frame, a low eye, nearest filtering, and one sample.
 TEST(Golden, ModelsThroughEachShadingAndView) {
     const test_support::ScratchDir dir;
     const auto model = std::make_shared<const raster::Model>(raster::read_obj(test_support::write_crate_on_floor(dir.path())));
@@ -161,6 +161,7 @@ TEST(Golden, ModelsThroughEachShadingAndView) {
         std::string name;
         raster::ModelView view;
         double turn = 0.0;
+        int samples = raster::kSmoothSamples;
     };
     std::vector<Case> cases;
     for (const auto& [name, shading] : {std::pair{"phong", raster::ShadingMethod::phong}, std::pair{"gouraud", raster::ShadingMethod::gouraud},
@@ -178,6 +179,7 @@ TEST(Golden, ModelsThroughEachShadingAndView) {
     low.fov_degrees = 60.0;
     cases.push_back({"low-eye", low});
     cases.push_back({"nearest", raster::ModelView{}});
+    cases.push_back({"one-sample", raster::ModelView{}, 0.0, 1});
     for (const Case& c : cases) {
         Framebuffer image(160, 120);
         raster::DepthBuffer depth;
@@ -185,7 +187,7 @@ TEST(Golden, ModelsThroughEachShadingAndView) {
         if (c.name == "nearest") {
             for (raster::ModelPart& part : copy->parts) part.sampler.filter = raster::TextureFilter::nearest;
         }
-        raster::ModelStage(copy, c.view, image.width(), image.height()).render(image, depth, c.turn, {.samples = raster::kSmoothSamples});
+        raster::ModelStage(copy, c.view, image.width(), image.height()).render(image, depth, c.turn, {.samples = c.samples});
         EXPECT_TRUE(matches_snapshot(image, "models/crate-" + c.name));
     }
 }
