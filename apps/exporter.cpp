@@ -209,9 +209,10 @@ void add_samples_option(CLI::App& app, ExportOptions& options, const std::string
     std::vector<std::pair<std::string, int>> counts;
     for (const int count : raster::kSampleCounts) counts.emplace_back(std::to_string(count), count);
     add_choice_option<int>(app, "--samples", options.samples, counts,
-                           "Samples per pixel, for smooth edges: the frame is drawn once at each of the standard "
-                           "(Direct3D and Vulkan) sample positions and the passes are averaged in linear light, so "
-                           "N samples take about N times as long. 1 draws each pixel at its centre, with stair-step edges",
+                           "Samples per pixel, for smooth edges: coverage and depth are tested at each of the "
+                           "standard (Direct3D and Vulkan) sample positions, each pixel is shaded once, and its "
+                           "samples are averaged in linear light. 1 draws each pixel at its centre, with "
+                           "stair-step edges, and is the fastest",
                            default_text);
 }
 

@@ -1,6 +1,7 @@
 // antialias-lab: how far each anti-aliasing method's coverage is from the exact area of every
 // pixel, and what it costs per frame. The product's --samples 1..16 draws white triangles on
-// black (unlit, so a pixel's linear value is its coverage estimate); the exact area comes from
+// black (unlit, so a pixel's linear value is its coverage estimate), by multisampling and by
+// supersampling (whose coverage must be the same); the exact area comes from
 // clipping each triangle to each pixel's square in double precision. A lab-only method, analytic
 // coverage composited with "over", shows where per-triangle areas fail: edges two triangles share.
 // Writes antialias.csv (error by case and method), antialias-time.csv (time per frame of two
@@ -104,7 +105,7 @@ std::vector<std::vector<double>> areas_of(const std::vector<Triangle>& frame) {
 }
 
 // The product's estimate: the triangles drawn white on black, unlit, at `samples` per pixel.
-std::vector<double> sampled(const std::vector<Triangle>& frame, int samples) {
+std::vector<double> sampled(const std::vector<Triangle>& frame, int samples, bool every = false) {
     auto mesh = std::make_shared<raster::Mesh>();
     const double centre = (kSide - 1) / 2.0, scale = (kSide - 1) / 2.0;  // OrthoCamera's map for a square image
     for (const Triangle& t : frame) {
@@ -117,7 +118,7 @@ std::vector<double> sampled(const std::vector<Triangle>& frame, int samples) {
     scene.objects.push_back({mesh, glm::mat4(1.0F), raster::PhongMaterial{{0, 0, 0}, {1, 1, 1}, {0, 0, 0}, {}}, raster::ShadingMethod::unlit});
     raster::Framebuffer image(kSide, kSide);
     raster::DepthBuffer depth;
-    raster::render(image, scene, depth, {1, samples});
+    raster::render(image, scene, depth, {1, samples, every});
     std::vector<double> coverage(kSide * kSide);
     for (int y = 0; y < kSide; ++y) {
         for (int x = 0; x < kSide; ++x) coverage[static_cast<std::size_t>(y * kSide + x)] = raster::linear_from_srgb_channel(image.pixel(x, y).g / 255.0);
@@ -219,14 +220,20 @@ void measure(Error& error, const std::vector<double>& estimate, const std::vecto
     }
 }
 
-// Median milliseconds per frame of a scene at each sample count, the counts interleaved.
-template <typename Draw>
-std::vector<double> times(Draw draw, int repetitions) {
-    std::vector<std::vector<double>> seconds(std::size(raster::kSampleCounts));
+// Median milliseconds per frame of a scene at each sample count, multisampled then supersampled,
+// everything interleaved; one Renderer per configuration, kept as an animation keeps it.
+template <typename Scene>
+std::vector<double> times(const Scene& scene, int repetitions) {
+    std::vector<raster::Renderer> renderers;
+    for (const bool every : {false, true}) {
+        for (const int samples : raster::kSampleCounts) renderers.emplace_back(raster::RenderOptions{1, samples, every});
+    }
+    raster::Framebuffer frame(800, 600);
+    std::vector<std::vector<double>> seconds(renderers.size());
     for (int r = 0; r < repetitions; ++r) {
-        for (std::size_t k = 0; k < seconds.size(); ++k) {
+        for (std::size_t k = 0; k < renderers.size(); ++k) {
             const auto start = std::chrono::steady_clock::now();
-            draw(raster::kSampleCounts[k]);
+            renderers[k].render(frame, scene);
             seconds[k].push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
         }
     }
@@ -258,7 +265,12 @@ int main(int argc, char** argv) {
             for (double& e : exact) e = std::min(e, 1.0);
             const std::vector<bool> edge = edge_pixels(areas);
             for (std::size_t k = 0; k < std::size(raster::kSampleCounts); ++k) {
-                measure(errors[k], sampled(frame, raster::kSampleCounts[k]), exact, edge);
+                const std::vector<double> multisampled = sampled(frame, raster::kSampleCounts[k]);
+                if (multisampled != sampled(frame, raster::kSampleCounts[k], true)) {
+                    std::cerr << "antialias-lab: multisampling and supersampling cover " << c.name << " differently\n";
+                    return 1;
+                }
+                measure(errors[k], multisampled, exact, edge);
             }
             measure(errors.back(), analytic_over(areas), exact, edge);
         }
@@ -279,22 +291,21 @@ int main(int argc, char** argv) {
     }
 
     // The cost: one thread, 800 x 600, the diary's torus (Phong, lit) and Ptah's textured knot.
-    raster::Framebuffer frame(800, 600);
-    const raster::Scene torus = raster::DiaryScene("torus").still(800, 600);
-    const raster::PerspectiveScene ptah = raster::SeedScene("ptah").still(800, 600);
-    const auto torus_ms = times([&](int samples) { raster::Renderer({1, samples}).render(frame, torus); }, 7);
-    const auto ptah_ms = times([&](int samples) { raster::Renderer({1, samples}).render(frame, ptah); }, 7);
+    const auto torus_ms = times(raster::DiaryScene("torus").still(800, 600), 9);
+    const auto ptah_ms = times(raster::SeedScene("ptah").still(800, 600), 9);
+    const std::size_t counts = std::size(raster::kSampleCounts);
     std::ofstream timing(*out / "antialias-time.csv");
-    timing << "samples,torus ms,ptah ms";
+    timing << "samples,torus ms,ptah ms,torus supersampled ms,ptah supersampled ms";
     for (const std::string& name : names) timing << ',' << name;
     timing << '\n';
-    summary << "\n| samples | torus, ms per 800 x 600 frame | ptah, ms |\n|---|---|---|\n";
-    for (std::size_t k = 0; k < torus_ms.size(); ++k) {
-        timing << raster::kSampleCounts[k] << ',' << torus_ms[k] << ',' << ptah_ms[k];
+    summary << "\n| samples | torus, ms per 800 x 600 frame | supersampled | ptah, ms | supersampled |\n|---|---|---|---|---|\n";
+    for (std::size_t k = 0; k < counts; ++k) {
+        timing << raster::kSampleCounts[k] << ',' << torus_ms[k] << ',' << ptah_ms[k] << ',' << torus_ms[counts + k] << ',' << ptah_ms[counts + k];
         for (const auto& by_count : means) timing << ',' << by_count[k];
         timing << '\n';
-        char row[120];
-        std::snprintf(row, sizeof row, "| %d | %.1f | %.1f |\n", raster::kSampleCounts[k], torus_ms[k], ptah_ms[k]);
+        char row[160];
+        std::snprintf(row, sizeof row, "| %d | %.1f | %.1f | %.1f | %.1f |\n", raster::kSampleCounts[k], torus_ms[k], torus_ms[counts + k], ptah_ms[k],
+                      ptah_ms[counts + k]);
         summary << row;
     }
     std::cout << "antialias-lab: wrote " << (*out / "antialias.csv").string() << '\n';

@@ -35,23 +35,24 @@ struct StripLayout {
 
 inline std::int32_t floor_div(std::int32_t a, std::int32_t b) noexcept { return a / b - ((a % b != 0) && ((a < 0) != (b < 0))); }
 
-// The rows whose pixel centres lie between a triangle's lowest and highest corner, clamped to
-// 0..height-1; first > last when there are none.
+// The rows whose pixel centres lie between a triangle's lowest and highest corner (widened by
+// `reach` subpixels each way, for samples away from the centres), clamped to 0..height-1;
+// first > last when there are none.
 struct RowRange {
     int first;
     int last;
 };
-inline RowRange rows_reached(const std::array<SubpixelPoint, 3>& points, int height) noexcept {
-    const std::int32_t low = std::min({points[0].y, points[1].y, points[2].y});
-    const std::int32_t high = std::max({points[0].y, points[1].y, points[2].y});
+inline RowRange rows_reached(const std::array<SubpixelPoint, 3>& points, int height, std::int32_t reach = 0) noexcept {
+    const std::int32_t low = std::min({points[0].y, points[1].y, points[2].y}) - reach;
+    const std::int32_t high = std::max({points[0].y, points[1].y, points[2].y}) + reach;
     return {std::max(-floor_div(-low, kSubpixelOne), 0), std::min(floor_div(high, kSubpixelOne), height - 1)};
 }
 
 // Whether no column's pixel centre lies between a triangle's leftmost and rightmost corner: a
 // sliver the fill would find empty, dropped before any setup (rows_reached does the same for rows).
-inline bool between_columns(const std::array<SubpixelPoint, 3>& points) noexcept {
-    const std::int32_t low = std::min({points[0].x, points[1].x, points[2].x});
-    const std::int32_t high = std::max({points[0].x, points[1].x, points[2].x});
+inline bool between_columns(const std::array<SubpixelPoint, 3>& points, std::int32_t reach = 0) noexcept {
+    const std::int32_t low = std::min({points[0].x, points[1].x, points[2].x}) - reach;
+    const std::int32_t high = std::max({points[0].x, points[1].x, points[2].x}) + reach;
     return -floor_div(-low, kSubpixelOne) > floor_div(high, kSubpixelOne);
 }
 
@@ -62,8 +63,9 @@ class StripBins {
 public:
     using Triangle = std::array<ShadedCorner<Varying>, 3>;
 
-    explicit StripBins(const StripLayout& layout)
-        : height_(layout.height), rows_(layout.rows), starts_(static_cast<std::size_t>(layout.count() + 1), 0) {}
+    // `reach`: how far, in subpixels, a sample may lie from its pixel centre (0 without multisampling).
+    explicit StripBins(const StripLayout& layout, std::int32_t reach = 0)
+        : height_(layout.height), rows_(layout.rows), reach_(reach), starts_(static_cast<std::size_t>(layout.count() + 1), 0) {}
 
     // Room for this many triangles: a facet is one unless clipping splits it.
     void reserve(std::size_t triangles) {
@@ -74,8 +76,8 @@ public:
     // Keeps a triangle that can cover a pixel centre of the image; counts it into its strips.
     void add(const Triangle& corners) {
         const std::array<SubpixelPoint, 3> points{corners[0].at, corners[1].at, corners[2].at};
-        const RowRange rows = rows_reached(points, height_);
-        if (rows.first > rows.last || between_columns(points)) return;  // covers no pixel centre of the image
+        const RowRange rows = rows_reached(points, height_, reach_);
+        if (rows.first > rows.last || between_columns(points, reach_)) return;  // covers no sample of the image
         const int first = rows.first / rows_, last = rows.last / rows_;
         triangles_.push_back(corners);
         spans_.push_back({first, last});
@@ -102,6 +104,7 @@ public:
 private:
     int height_;
     int rows_;
+    std::int32_t reach_;
     std::vector<Triangle> triangles_;
     std::vector<RowRange> spans_;  // strips, not rows: first and last
     std::vector<std::uint32_t> starts_;  // per strip, where its members begin; one past the end last

@@ -33,7 +33,7 @@ void SampleResolve::add(const Framebuffer& pass, std::span<const std::uint8_t> c
 void SampleResolve::resolve(Framebuffer& out, Rgb background, std::vector<std::uint8_t>* alpha) const {
     if (out.width() != width_ || out.height() != height_) throw std::invalid_argument("a resolved frame differs in size from its passes");
     const std::size_t pixels = static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_);
-    if (alpha != nullptr) alpha->assign(pixels, 255);
+    if (alpha != nullptr && with_alpha_) alpha->assign(pixels, 255);
     std::uint8_t* bytes = out.pixels();
     for (std::size_t i = 0; i < pixels; ++i) {
         const int count = with_alpha_ ? covered_[i] : passes_;

@@ -8,6 +8,8 @@
 #include "camera/clipped_facets.hpp"
 #include "geometry/posing.hpp"
 #include "rasterize/strip_bins.hpp"
+#include "rasterize/multisample_triangle.hpp"
+#include "rasterize/sample_buffer.hpp"
 #include "rasterize/worker_team.hpp"
 #include "render/sample_resolve.hpp"
 
@@ -98,12 +100,21 @@ constexpr std::size_t kLargestBatch = 8192;
 // through the front end `front_for(mesh, shader)` in batches, then its facets
 // likewise, each batch binned into strips of rows, then the strips, cleared on the first
 // object's pass and drawn with every batch's triangles in facet order.
+// Multisampling: one with `samples` draws into its sample buffer instead, at its offsets, and
+// resolves every strip into the framebuffer at the end (and the coverage into `alpha`, if any).
+struct Multisampling {
+    detail::SampleBuffer* buffer = nullptr;
+    std::span<const detail::SampleOffset> offsets{};
+    std::uint8_t* alpha = nullptr;
+};
+
 template <detail::Interpolation kMode, typename Camera, typename FrontFor>
 std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& scene, DepthBuffer& depth,
-                           std::optional<glm::vec3> eye, detail::WorkerTeam& team, FrontFor front_for) {
+                           std::optional<glm::vec3> eye, detail::WorkerTeam& team, FrontFor front_for, Multisampling multisampling) {
+    detail::SampleBuffer* const samples = multisampling.buffer;
     const bool depth_test = needs_depth(scene);
-    if (depth_test) depth.resize(framebuffer.width(), framebuffer.height());  // each strip clears its own rows
-    DepthBuffer* const tested = depth_test ? &depth : nullptr;
+    if (depth_test && samples == nullptr) depth.resize(framebuffer.width(), framebuffer.height());  // each strip clears its own rows
+    DepthBuffer* const tested = depth_test && samples == nullptr ? &depth : nullptr;  // samples keep their own depths
     const glm::vec3 to_eye = -scene.camera.direction();
     const detail::StripLayout layout = detail::StripLayout::of(framebuffer.width(), framebuffer.height());
     const auto batch_size = [&](std::size_t items) {
@@ -117,6 +128,7 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
     };
     bool cleared = false;
     const auto clear = [&](const PixelRect& strip) {
+        if (samples != nullptr) return samples->clear_rows(strip.y, strip.y + strip.height, scene.background);
         framebuffer.clear_rows(strip.y, strip.y + strip.height, scene.background);
         if (tested != nullptr) tested->clear_rows(strip.y, strip.y + strip.height);
     };
@@ -138,7 +150,7 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
                 front.vertices(begin, end);  // reads vertex i's posed data only
             });
             std::vector<detail::StripBins<typename Shader::Varying>> bins(static_cast<std::size_t>(batches(facets, facet_batch)),
-                                                                          detail::StripBins<typename Shader::Varying>(layout));
+                                                                          detail::StripBins<typename Shader::Varying>(layout, samples != nullptr ? kSubpixelOne / 2 : 0));
             std::vector<std::size_t> counted(bins.size());
             team.for_each(static_cast<int>(bins.size()), [&](int b) {
                 const auto [begin, end] = range(b, facets, facet_batch);
@@ -153,7 +165,11 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
                 if (!cleared) clear(strip);
                 for (const auto& batch : bins) {
                     batch.for_each_in(s, [&](const auto& corners) {
-                        detail::shade_triangle<Shader, detail::FloatDepth, kMode>(framebuffer, tested, corners, shader, {}, strip);
+                        if (samples != nullptr) {
+                            detail::shade_triangle_samples<Shader, kMode>(*samples, depth_test, corners, shader, strip, multisampling.offsets);
+                        } else {
+                            detail::shade_triangle<Shader, detail::FloatDepth, kMode>(framebuffer, tested, corners, shader, {}, strip);
+                        }
                     });
                 }
             });
@@ -164,47 +180,81 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
     if (!cleared) {
         team.for_each(layout.count(), [&](int s) { clear(layout.strip(s)); });
     }
+    if (samples != nullptr) {
+        team.for_each(layout.count(), [&](int s) {
+            const PixelRect strip = layout.strip(s);
+            samples->resolve_rows(strip.y, strip.y + strip.height, framebuffer, scene.background, multisampling.alpha);
+        });
+    }
     return drawn;
 }
 
-std::size_t draw(Framebuffer& framebuffer, const Scene& scene, DepthBuffer& depth, detail::WorkerTeam& team) {
+std::size_t draw(Framebuffer& framebuffer, const Scene& scene, DepthBuffer& depth, detail::WorkerTeam& team, Multisampling multisampling = {}) {
     // Orthographic: attributes are linear on screen, and the direction toward the viewer is the same at every pixel.
     return render_objects<detail::Interpolation::screen_linear>(framebuffer, scene, depth, std::nullopt, team,
                                                                 [&](const Mesh& mesh, const auto& shader) {
                                                                     return detail::OrthoFront(scene.camera, mesh, shader);
-                                                                });
+                                                                },
+                                                                multisampling);
 }
 
-std::size_t draw(Framebuffer& framebuffer, const PerspectiveScene& scene, DepthBuffer& depth, detail::WorkerTeam& team) {
+std::size_t draw(Framebuffer& framebuffer, const PerspectiveScene& scene, DepthBuffer& depth, detail::WorkerTeam& team,
+                 Multisampling multisampling = {}) {
     // Phase 2 takes the direction toward the eye at every point.
     return render_objects<detail::Interpolation::perspective>(
         framebuffer, scene, depth, scene.camera.eye(), team, [&](const Mesh& mesh, const auto& shader) {
             return detail::PerspectiveFront(framebuffer, scene.camera, mesh, shader, detail::kGuardBandPixels);
-        });
+        },
+        multisampling);
 }
 
-// Draws the scene once at each of `samples` sample positions and resolves the passes into
-// `framebuffer`; one sample is the plain draw. `alpha`, for a scene that keeps depth and more than
-// one sample, receives the share of samples covered.
+// The most memory a frame's samples may take (colour and depth, 7 bytes a sample); a frame that
+// needs more is drawn pass by pass, in the memory of two frames.
+constexpr std::size_t kMaxSampleBufferBytes = std::size_t{1} << 30;
+
+// Draws the scene at `samples` per pixel into `framebuffer`; one sample is the plain draw.
+// Multisampling shades once per pixel into `buffer`; supersampling (asked for, or when the
+// samples of the frame would not fit in kMaxSampleBufferBytes) draws a whole pass at each
+// sample position. `alpha`, for a scene that keeps depth, receives the share of samples covered.
 template <typename Camera>
 std::size_t draw_samples(Framebuffer& framebuffer, const BasicScene<Camera>& scene, DepthBuffer& depth, detail::WorkerTeam& team,
-                         int samples, std::vector<std::uint8_t>* alpha) {
-    const std::span<const glm::vec2> offsets = sample_offsets(samples);
+                         RenderOptions options, detail::SampleBuffer& buffer, std::vector<std::uint8_t>* alpha) {
+    const std::span<const glm::vec2> offsets = sample_offsets(options.samples);
     if (offsets.size() == 1) return draw(framebuffer, scene, depth, team);
-    detail::SampleResolve resolve(framebuffer.width(), framebuffer.height(), scene.keep_depth);
+    const std::size_t pixels = static_cast<std::size_t>(framebuffer.width()) * static_cast<std::size_t>(framebuffer.height());
+    if (!options.shade_every_sample && pixels * offsets.size() * 7 <= kMaxSampleBufferBytes) {
+        std::array<detail::SampleOffset, detail::kMaxSamples> at{};
+        for (std::size_t s = 0; s < offsets.size(); ++s) {
+            const glm::dvec2 o(offsets[s]);
+            at[s] = {static_cast<std::int32_t>(std::lround(o.x * kSubpixelOne)), static_cast<std::int32_t>(std::lround(o.y * kSubpixelOne)), o.x, o.y};
+        }
+        buffer.resize(framebuffer.width(), framebuffer.height(), static_cast<int>(offsets.size()));
+        std::uint8_t* coverage = nullptr;
+        if (alpha != nullptr && scene.keep_depth) {
+            alpha->assign(pixels, 0);
+            coverage = alpha->data();
+        } else if (alpha != nullptr) {
+            alpha->clear();  // an opaque scene has no coverage to give
+        }
+        return draw(framebuffer, scene, depth, team, {&buffer, std::span(at.data(), offsets.size()), coverage});
+    }
+    // Only a caller that takes the alpha gets the surfaces' colour apart from the background.
+    const bool with_alpha = alpha != nullptr && scene.keep_depth;
+    if (alpha != nullptr && !with_alpha) alpha->clear();
+    detail::SampleResolve resolve(framebuffer.width(), framebuffer.height(), with_alpha);
     Framebuffer pass(framebuffer.width(), framebuffer.height());
-    BasicScene<Camera> at = scene;
+    BasicScene<Camera> moved = scene;
     std::size_t drawn = 0;
     for (const glm::vec2 offset : offsets) {
-        at.camera = scene.camera.sampled_at(glm::dvec2(offset));
-        drawn = draw(pass, at, depth, team);
-        if (scene.keep_depth) {
+        moved.camera = scene.camera.sampled_at(glm::dvec2(offset));
+        drawn = draw(pass, moved, depth, team);
+        if (with_alpha) {
             resolve.add(pass, depth.coverage());
         } else {
             resolve.add(pass);
         }
     }
-    resolve.resolve(framebuffer, scene.background, alpha);
+    resolve.resolve(framebuffer, scene.background, with_alpha ? alpha : nullptr);
     return drawn;
 }
 
@@ -213,29 +263,32 @@ std::size_t draw_samples(Framebuffer& framebuffer, const BasicScene<Camera>& sce
 std::size_t render(Framebuffer& framebuffer, const Scene& scene, DepthBuffer& depth, RenderOptions options) {
     (void)sample_offsets(options.samples);  // refused before any thread starts
     detail::WorkerTeam team(std::min(thread_count(options.threads), framebuffer.height()));
-    return draw_samples(framebuffer, scene, depth, team, options.samples, nullptr);
+    detail::SampleBuffer buffer;
+    return draw_samples(framebuffer, scene, depth, team, options, buffer, nullptr);
 }
 
 std::size_t render(Framebuffer& framebuffer, const PerspectiveScene& scene, DepthBuffer& depth, RenderOptions options) {
     (void)sample_offsets(options.samples);
     detail::WorkerTeam team(std::min(thread_count(options.threads), framebuffer.height()));
-    return draw_samples(framebuffer, scene, depth, team, options.samples, nullptr);
+    detail::SampleBuffer buffer;
+    return draw_samples(framebuffer, scene, depth, team, options, buffer, nullptr);
 }
 
 Renderer::Renderer(RenderOptions options)
     : team_(std::make_unique<detail::WorkerTeam>(thread_count(options.threads))),
-      samples_(static_cast<int>(sample_offsets(options.samples).size())) {}
+      samples_buffer_(std::make_unique<detail::SampleBuffer>()),
+      options_{options.threads, static_cast<int>(sample_offsets(options.samples).size()), options.shade_every_sample} {}
 Renderer::~Renderer() = default;
 Renderer::Renderer(Renderer&&) noexcept = default;
 Renderer& Renderer::operator=(Renderer&&) noexcept = default;
 int Renderer::threads() const noexcept { return team_->size(); }
 std::size_t Renderer::render(Framebuffer& framebuffer, const Scene& scene) {
-    return draw_samples(framebuffer, scene, depth_, *team_, samples_, &coverage_);
+    return draw_samples(framebuffer, scene, depth_, *team_, options_, *samples_buffer_, &coverage_);
 }
 std::size_t Renderer::render(Framebuffer& framebuffer, const PerspectiveScene& scene) {
-    return draw_samples(framebuffer, scene, depth_, *team_, samples_, &coverage_);
+    return draw_samples(framebuffer, scene, depth_, *team_, options_, *samples_buffer_, &coverage_);
 }
-std::vector<std::uint8_t> Renderer::coverage() const { return samples_ == 1 ? depth_.coverage() : coverage_; }
+std::vector<std::uint8_t> Renderer::coverage() const { return options_.samples == 1 ? depth_.coverage() : coverage_; }
 
 PerspectiveScene in_perspective(const Scene& scene, int width, int height, double fov_degrees) {
     if (!(fov_degrees > 0.0 && fov_degrees < 180.0)) {

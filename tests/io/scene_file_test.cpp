@@ -105,7 +105,9 @@ TEST(SceneFile, PlyAndStlColoursAreSrgbAndGltfColoursLinear) {
                              "property uchar red\nproperty uchar green\nproperty uchar blue\nelement face 1\n"
                              "property list uchar int vertex_indices\nend_header\n0 0 0 128 128 128\n1 0 0 128 128 128\n"
                              "0 1 0 128 128 128\n3 0 1 2\n");
-    for (const raster::LinearRgb& c : colours_of(raster::read_model(dir / "grey.ply"))) {
+    const std::vector<raster::LinearRgb> mid_grey = colours_of(raster::read_model(dir / "grey.ply"));
+    ASSERT_EQ(mid_grey.size(), 3U);
+    for (const raster::LinearRgb& c : mid_grey) {
         EXPECT_NEAR(c.r, raster::linear_from_srgb_channel(128.0 / 255.0), 1e-5);
     }
     // glTF's COLOR_0 is linear already: 0.5 stays 0.5.
@@ -129,7 +131,9 @@ TEST(SceneFile, PlyAndStlColoursAreSrgbAndGltfColoursLinear) {
     EXPECT_TRUE(colours_of(raster::read_model(dir / "plain.stl")).empty());
     // assimp-testmodels' float-color.ply: one triangle of float colours, pure blue.
     if (std::filesystem::exists(kTestModels / "PLY/float-color.ply")) {
-        for (const raster::LinearRgb& c : colours_of(raster::read_model(kTestModels / "PLY/float-color.ply"))) {
+        const std::vector<raster::LinearRgb> blue = colours_of(raster::read_model(kTestModels / "PLY/float-color.ply"));
+        ASSERT_EQ(blue.size(), 3U);
+        for (const raster::LinearRgb& c : blue) {
             EXPECT_EQ(c, (raster::LinearRgb{0, 0, 1}));
         }
     }

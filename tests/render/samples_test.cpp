@@ -1,6 +1,7 @@
 // Anti-aliasing by samples: each pass at a standard sample position, resolved in linear light.
 #include <raster/render/samples.hpp>
 #include <raster/render/scene.hpp>
+#include <raster/scenes/diary_scenes.hpp>
 #include <raster/shade/colour.hpp>
 
 #include <gtest/gtest.h>
@@ -109,10 +110,46 @@ TEST(Samples, EdgePixelsTakeTheShareOfSamplesCoveredInLinearLight) {
     EXPECT_NEAR(raster::linear_from_srgb_channel(sixteen.pixel(0, 4).g / 255.0), 8.0 / 16.0, 0.01);
 }
 
+TEST(Samples, EachPassLooksFromItsSamplePositionInBothCameras) {
+    // A pixel centre of the moved camera sees what lies `offset` from it: the screen position of
+    // a world point moves by minus the offset, x right and y down alike.
+    const glm::dvec2 offset(6.0 / 16, -2.0 / 16);
+    const glm::vec3 point(0.3F, -0.2F, 0.5F);
+    const raster::OrthoCamera flat = raster::OrthoCamera::look_at(64, 48, {0.0F, 0.0F, -3.0F});
+    const glm::dvec2 moved = flat.sampled_at(offset).screen_from_world(point) - flat.screen_from_world(point);
+    EXPECT_NEAR(moved.x, -offset.x, 1e-9);
+    EXPECT_NEAR(moved.y, -offset.y, 1e-9);
+    const raster::PerspectiveCamera lens = raster::PerspectiveCamera::look_at(64, 48, {0.0F, 0.0F, -3.0F}, {0.0F, 0.0F, 0.0F},
+                                                                             {0.0F, 1.0F, 0.0F}, {50.0, 0.1, 10.0});
+    const glm::dvec4 clip = lens.clip_from_world(point);
+    const glm::dvec2 seen = lens.sampled_at(offset).screen_from_clip(clip) - lens.screen_from_clip(clip);
+    EXPECT_NEAR(seen.x, -offset.x, 1e-9);
+    EXPECT_NEAR(seen.y, -offset.y, 1e-9);
+}
+
+// The spheres and tori of the diary's scenes, big enough for several strips and facet batches.
 TEST(Samples, TheSamePictureOnAnyNumberOfThreads) {
-    const raster::Scene scene = white_rectangle();
+    const raster::Scene scene = raster::DiaryScene("two-spheres").still(320, 400);
+    for (const int count : {2, 4, 16}) {
+        Framebuffer one(320, 400), three(320, 400);
+        raster::DepthBuffer depth;
+        raster::render(one, scene, depth, {.threads = 1, .samples = count});
+        raster::render(three, scene, depth, {.threads = 3, .samples = count});
+        EXPECT_EQ(one, three) << count;
+    }
+}
+
+// Multisampling tests coverage and depth at the same positions a supersampled pass does, so on
+// one flat colour the two agree exactly, in either camera; shading differs only inside pixels.
+TEST(Samples, MultisamplingCoversWhatSupersamplingCovers) {
     for (const int count : raster::kSampleCounts) {
-        EXPECT_EQ(drawn(scene, {.threads = 1, .samples = count}), drawn(scene, {.threads = 3, .samples = count})) << count;
+        EXPECT_EQ(drawn(white_rectangle(), {.samples = count}), drawn(white_rectangle(), {.samples = count, .shade_every_sample = true})) << count;
+        const raster::PerspectiveScene lens = raster::in_perspective(white_rectangle(), 9, 9, 70.0);
+        Framebuffer multi(9, 9), super(9, 9);
+        raster::DepthBuffer depth;
+        raster::render(multi, lens, depth, {.samples = count});
+        raster::render(super, lens, depth, {.samples = count, .shade_every_sample = true});
+        EXPECT_EQ(multi, super) << count;
     }
 }
 

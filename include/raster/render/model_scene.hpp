@@ -30,7 +30,7 @@ struct ModelView {
     ShadingMethod shading = ShadingMethod::phong;
     Rgb background{48, 52, 60};
     // The background is to be left transparent: depth is kept for every model, so that the
-    // pixels drawn can be read afterwards (DepthBuffer::coverage, Renderer::depth).
+    // pixels drawn can be read afterwards (Renderer::coverage).
     bool transparent = false;
     Culling cull = Culling::automatic;
 };

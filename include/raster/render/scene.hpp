@@ -53,8 +53,8 @@ struct BasicScene {
     std::vector<SceneObject> objects;
     // Light dimmed with view depth (Phase 2 materials in perspective only), as raster-engine does.
     std::optional<DepthDarkening> darkening{};
-    // Depth kept even where the scene needs none, so that the caller can read what was drawn
-    // (DepthBuffer::coverage) for a transparent background.
+    // Depth kept even where the scene needs none, so that the caller can read what was drawn for
+    // a transparent background: Renderer::coverage (or, at one sample, DepthBuffer::coverage).
     bool keep_depth = false;
 };
 using Scene = BasicScene<OrthoCamera>;
@@ -72,14 +72,19 @@ template <typename Camera>
 // The picture is the same, bit for bit, whatever the count (doc/conventions.md#threads).
 struct RenderOptions {
     int threads = 1;  // 0: one per core; counts above kMaxThreads are taken as kMaxThreads
-    // Samples per pixel, 1, 2, 4, 8 or 16: the frame is drawn once at each standard sample
-    // position and the passes averaged in linear light (raster/render/samples.hpp).
+    // Samples per pixel, 1, 2, 4, 8 or 16, at the standard sample positions, averaged in linear
+    // light (raster/render/samples.hpp). Coverage and depth are tested at every sample and the
+    // shader runs once per pixel (multisampling)...
     int samples = 1;
+    // ...or, when true (or when a frame's samples would take over 1 GiB), the whole frame is
+    // drawn once per sample position, shading included (supersampling).
+    bool shade_every_sample = false;
 };
 inline constexpr int kMaxThreads = 256;
 
 namespace detail {
 class WorkerTeam;
+class SampleBuffer;
 }
 
 // Clears to the background and draws every object; `depth` is prepared and used only when the
@@ -104,19 +109,22 @@ public:
     std::size_t render(Framebuffer& framebuffer, const Scene& scene);
     std::size_t render(Framebuffer& framebuffer, const PerspectiveScene& scene);
     [[nodiscard]] int threads() const noexcept;
-    [[nodiscard]] int samples() const noexcept { return samples_; }
-    // The depth of the last frame drawn (of its last sample pass), for a scene that needed depth.
+    [[nodiscard]] int samples() const noexcept { return options_.samples; }
+    // The depth of the last frame drawn with one sample (or of its last pass), for a scene that needed depth.
     [[nodiscard]] const DepthBuffer& depth() const noexcept { return depth_; }
     // For a scene that keeps depth, one byte per pixel of the last frame: the share of its
-    // samples a surface covers, 0..255, the alpha of a transparent background. A pixel partly
-    // covered then holds the mean colour of the surfaces alone, not mixed with the background.
+    // samples a surface covers, 0..255, the alpha of a transparent background. With more than one
+    // sample a pixel partly covered then holds the mean colour of the surfaces alone, not mixed
+    // with the background (render() without a Renderer mixes them, as an opaque frame does).
+    // Empty after an opaque scene drawn with more than one sample.
     [[nodiscard]] std::vector<std::uint8_t> coverage() const;
 
 private:
     std::unique_ptr<detail::WorkerTeam> team_;
+    std::unique_ptr<detail::SampleBuffer> samples_buffer_;  // kept from frame to frame
     DepthBuffer depth_;
-    int samples_ = 1;
-    std::vector<std::uint8_t> coverage_;  // of the last frame drawn in more than one pass
+    RenderOptions options_;
+    std::vector<std::uint8_t> coverage_;  // of the last frame drawn with more than one sample
 };
 
 // The scene through a pinhole of vertical field of view `fov_degrees` (0 < fov < 180): the eye

@@ -1,0 +1,154 @@
+#pragma once
+
+#include "rasterize/sample_buffer.hpp"
+#include "rasterize/shaded_triangle.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <glm/vec2.hpp>
+
+// Multisampling: one triangle's coverage and depth tested at every sample position, its shader
+// run once per pixel, and the colour written to the samples that passed
+// (doc/conventions.md#samples). Coverage is the one-sample fill of the triangle moved by each
+// sample's offset, so it keeps the fill rule and is exactly what a pass at that position covers.
+namespace raster::detail {
+
+// A sample position in whole subpixels and in pixels: the offsets are multiples of 1/16 pixel.
+struct SampleOffset {
+    std::int32_t x_subpixels;
+    std::int32_t y_subpixels;
+    double x;
+    double y;
+};
+
+// The most rows one call draws at a time, and the most samples a pixel has.
+inline constexpr int kMultisampleBand = 64;
+inline constexpr int kMaxSamples = 16;
+
+// Draws one triangle facing the camera into rows `rows` of `target`; depth is tested per sample
+// when `depth_test`, and written per sample always (a transparent frame reads coverage from it).
+template <typename Shader, Interpolation kMode>
+void shade_triangle_samples(SampleBuffer& target, bool depth_test, const std::array<ShadedCorner<typename Shader::Varying>, 3>& corners,
+                            const Shader& shader, PixelRect rows, std::span<const SampleOffset> offsets) {
+    using Varying = typename Shader::Varying;
+    const std::array<SubpixelPoint, 3> points{corners[0].at, corners[1].at, corners[2].at};
+    const std::int64_t twice_area = twice_signed_area(points);
+    if (twice_area == 0) return;
+    const std::array<WeightPlane, 2> planes = weight_planes(points[0], points[1], points[2], twice_area);
+    const WeightPlane& w1 = planes[0];
+    const WeightPlane& w2 = planes[1];
+    const Varying base = corners[0].varying;
+    const Varying along1 = corners[1].varying - base;
+    const Varying along2 = corners[2].varying - base;
+    const double z0 = corners[0].depth, z1 = corners[1].depth - z0, z2 = corners[2].depth - z0;
+    const double inv0 = 1.0 / corners[0].depth, inv1 = 1.0 / corners[1].depth, inv2 = 1.0 / corners[2].depth;
+    bool constant = false;
+    Rgb constant_colour{};
+    if constexpr (!NeedsFootprint<Shader> && std::equality_comparable<Varying>) {
+        constant = corners[1].varying == base && corners[2].varying == base;
+        if (constant) constant_colour = shader.pixel(base);
+    }
+    // The view depth where the weights of corners 1 and 2 are a and b.
+    const auto depth_at = [&](double a, double b) {
+        if constexpr (kMode == Interpolation::perspective) {
+            return static_cast<float>(1.0 / ((1.0 - a - b) * inv0 + a * inv1 + b * inv2));
+        } else {
+            return static_cast<float>(z0 + z1 * a + z2 * b);
+        }
+    };
+    // The shader's colour where the weights are a and b, as shade_triangle computes it at a pixel.
+    const auto colour_at = [&](double a, double b) -> Rgb {
+        if (constant) return constant_colour;
+        if constexpr (kMode == Interpolation::perspective) {
+            const double q1 = a * inv1, q2 = b * inv2, sum = (1.0 - a - b) * inv0 + q1 + q2;
+            const double w = 1.0 / sum;
+            const double t1 = q1 * w, t2 = q2 * w;
+            const Varying varying = base + along1 * static_cast<float>(t1) + along2 * static_cast<float>(t2);
+            if constexpr (NeedsFootprint<Shader>) {
+                const auto change = [&](double da, double db) {
+                    const double dsum = (-da - db) * inv0 + da * inv1 + db * inv2;
+                    return along1 * static_cast<float>((da * inv1 - t1 * dsum) / sum) + along2 * static_cast<float>((db * inv2 - t2 * dsum) / sum);
+                };
+                return shader.pixel(varying, change(w1.per_pixel_x(), w2.per_pixel_x()), change(w1.per_pixel_y(), w2.per_pixel_y()));
+            } else {
+                return shader.pixel(varying);
+            }
+        } else {
+            const Varying varying = base + along1 * static_cast<float>(a) + along2 * static_cast<float>(b);
+            if constexpr (NeedsFootprint<Shader>) {
+                const Varying step = along1 * static_cast<float>(w1.per_pixel_x()) + along2 * static_cast<float>(w2.per_pixel_x());
+                const Varying step_y = along1 * static_cast<float>(w1.per_pixel_y()) + along2 * static_cast<float>(w2.per_pixel_y());
+                return shader.pixel(varying, step, step_y);
+            } else {
+                return shader.pixel(varying);
+            }
+        }
+    };
+
+    const int count = static_cast<int>(std::min<std::size_t>(offsets.size(), kMaxSamples));
+    const std::uint32_t all = (std::uint32_t{1} << count) - 1;
+    // Each sample's span on each row of the band: the triangle moved by minus its offset, filled at pixel centres.
+    std::array<std::array<std::int32_t, kMultisampleBand>, kMaxSamples> begins{}, ends{};
+    for (int band_y = rows.y; band_y < rows.y + rows.height; band_y += kMultisampleBand) {
+        const PixelRect band{rows.x, band_y, rows.width, std::min(kMultisampleBand, rows.y + rows.height - band_y)};
+        for (int s = 0; s < count; ++s) {
+            std::fill_n(begins[static_cast<std::size_t>(s)].begin(), band.height, 0);
+            std::fill_n(ends[static_cast<std::size_t>(s)].begin(), band.height, 0);
+            const SampleOffset& o = offsets[static_cast<std::size_t>(s)];
+            const std::array<SubpixelPoint, 3> moved{SubpixelPoint{points[0].x - o.x_subpixels, points[0].y - o.y_subpixels},
+                                                     SubpixelPoint{points[1].x - o.x_subpixels, points[1].y - o.y_subpixels},
+                                                     SubpixelPoint{points[2].x - o.x_subpixels, points[2].y - o.y_subpixels}};
+            rasterize_convex(moved, band, [&](Span span) {
+                begins[static_cast<std::size_t>(s)][static_cast<std::size_t>(span.y - band.y)] = span.x_begin;
+                ends[static_cast<std::size_t>(s)][static_cast<std::size_t>(span.y - band.y)] = span.x_end;
+            });
+        }
+        for (int r = 0; r < band.height; ++r) {
+            std::int32_t low = std::numeric_limits<std::int32_t>::max(), high = std::numeric_limits<std::int32_t>::min();
+            for (int s = 0; s < count; ++s) {
+                const auto b = begins[static_cast<std::size_t>(s)][static_cast<std::size_t>(r)], e = ends[static_cast<std::size_t>(s)][static_cast<std::size_t>(r)];
+                if (b < e) low = std::min(low, b), high = std::max(high, e);
+            }
+            const int y = band.y + r;
+            for (std::int32_t x = low; x < high; ++x) {
+                std::uint32_t covered = 0;
+                for (int s = 0; s < count; ++s) {
+                    if (x >= begins[static_cast<std::size_t>(s)][static_cast<std::size_t>(r)] && x < ends[static_cast<std::size_t>(s)][static_cast<std::size_t>(r)]) {
+                        covered |= std::uint32_t{1} << s;
+                    }
+                }
+                if (covered == 0) continue;
+                const double a = w1.at(x, y), b = w2.at(x, y);
+                float* nearest = target.depths(x, y);
+                std::uint32_t passed = 0;
+                double sum_a = 0.0, sum_b = 0.0;
+                int inside = 0;
+                for (int s = 0; s < count; ++s) {
+                    if ((covered & (std::uint32_t{1} << s)) == 0) continue;
+                    const SampleOffset& o = offsets[static_cast<std::size_t>(s)];
+                    const double as = a + o.x * w1.per_pixel_x() + o.y * w1.per_pixel_y();
+                    const double bs = b + o.x * w2.per_pixel_x() + o.y * w2.per_pixel_y();
+                    sum_a += as, sum_b += bs, ++inside;
+                    const float z = depth_at(as, bs);
+                    if (depth_test && z > nearest[s]) continue;  // something nearer is already there
+                    nearest[s] = z;
+                    passed |= std::uint32_t{1} << s;
+                }
+                if (passed == 0) continue;
+                // Shaded once: at the centre when every sample is inside, else at the covered samples'
+                // centroid, which lies inside the triangle, so nothing is read from beyond its edges.
+                const Rgb c = covered == all ? colour_at(a, b) : colour_at(sum_a / inside, sum_b / inside);
+                std::uint8_t* out = target.colours(x, y);
+                for (int s = 0; s < count; ++s) {
+                    if ((passed & (std::uint32_t{1} << s)) == 0) continue;
+                    out[s * 3] = c.r, out[s * 3 + 1] = c.g, out[s * 3 + 2] = c.b;
+                }
+            }
+        }
+    }
+}
+
+}  // namespace raster::detail

@@ -1,0 +1,71 @@
+#include "rasterize/sample_buffer.hpp"
+
+#include <raster/shade/colour.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace raster::detail {
+
+SampleBuffer::SampleBuffer() {
+    for (int byte = 0; byte < 256; ++byte) linear_[static_cast<std::size_t>(byte)] = static_cast<float>(linear_from_srgb_channel(byte / 255.0));
+}
+
+void SampleBuffer::resize(int width, int height, int samples) {
+    width_ = width, height_ = height, samples_ = samples;
+    const std::size_t count = static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * static_cast<std::size_t>(samples);
+    colours_.resize(count * 3);
+    depths_.resize(count);
+}
+
+void SampleBuffer::clear_rows(int y_begin, int y_end, Rgb background) noexcept {
+    y_begin = std::max(y_begin, 0), y_end = std::min(y_end, height_);
+    if (y_begin >= y_end) return;
+    const std::size_t begin = index(0, y_begin), end = index(0, y_end);
+    for (std::size_t i = begin; i < end; ++i) {
+        colours_[i * 3] = background.r, colours_[i * 3 + 1] = background.g, colours_[i * 3 + 2] = background.b;
+    }
+    std::fill(depths_.begin() + static_cast<std::ptrdiff_t>(begin), depths_.begin() + static_cast<std::ptrdiff_t>(end),
+              std::numeric_limits<float>::infinity());
+}
+
+void SampleBuffer::resolve_rows(int y_begin, int y_end, Framebuffer& frame, Rgb background, std::uint8_t* alpha) const noexcept {
+    std::uint8_t* out = frame.pixels();
+    const auto n = static_cast<std::size_t>(samples_);
+    for (int y = std::max(y_begin, 0); y < std::min(y_end, height_); ++y) {
+        for (int x = 0; x < width_; ++x) {
+            const std::size_t first = index(x, y);
+            const std::size_t pixel = static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x);
+            std::uint8_t* written = out + pixel * 3;
+            const std::uint8_t* own = colours_.data() + first * 3;
+            // Inside a surface every sample holds the same colour: it is the pixel's, exactly.
+            bool same = alpha == nullptr || !std::isinf(depths_[first]);
+            for (std::size_t s = 1; s < n && same; ++s) {
+                same = own[s * 3] == own[0] && own[s * 3 + 1] == own[1] && own[s * 3 + 2] == own[2] &&
+                       (alpha == nullptr || !std::isinf(depths_[first + s]));
+            }
+            if (same) {
+                written[0] = own[0], written[1] = own[1], written[2] = own[2];
+                if (alpha != nullptr) alpha[pixel] = 255;
+                continue;
+            }
+            float sum[3] = {0.0F, 0.0F, 0.0F};
+            std::size_t counted = 0;
+            for (std::size_t s = 0; s < n; ++s) {
+                if (alpha != nullptr && std::isinf(depths_[first + s])) continue;  // the background shows through
+                for (std::size_t c = 0; c < 3; ++c) sum[c] += linear_[colours_[(first + s) * 3 + c]];
+                ++counted;
+            }
+            if (counted == 0) {
+                written[0] = background.r, written[1] = background.g, written[2] = background.b;
+            } else {
+                const float share = 1.0F / static_cast<float>(counted);
+                for (std::size_t c = 0; c < 3; ++c) written[c] = srgb_byte_from_linear(sum[c] * share);
+            }
+            if (alpha != nullptr) alpha[pixel] = static_cast<std::uint8_t>((counted * 255 + n / 2) / n);
+        }
+    }
+}
+
+}  // namespace raster::detail

@@ -1,0 +1,47 @@
+#pragma once
+
+#include <raster/rasterize/framebuffer.hpp>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+// Multisampling's target: every pixel's samples side by side, each an sRGB colour and a view
+// depth, resolved in linear light into a framebuffer strip by strip (doc/conventions.md#samples).
+namespace raster::detail {
+
+class SampleBuffer {
+public:
+    SampleBuffer();
+    // Keeps its memory when the size does not grow; the contents are undefined until cleared.
+    void resize(int width, int height, int samples);
+    [[nodiscard]] int width() const noexcept { return width_; }
+    [[nodiscard]] int height() const noexcept { return height_; }
+    [[nodiscard]] int samples() const noexcept { return samples_; }
+
+    // Rows [y_begin, y_end): every sample the background, at infinite depth.
+    void clear_rows(int y_begin, int y_end, Rgb background) noexcept;
+    // The samples of pixel (x, y): samples() colours of three bytes, and samples() depths.
+    [[nodiscard]] std::uint8_t* colours(int x, int y) noexcept { return colours_.data() + index(x, y) * 3; }
+    [[nodiscard]] float* depths(int x, int y) noexcept { return depths_.data() + index(x, y); }
+
+    // Rows [y_begin, y_end) of `frame`, each pixel the linear mean of its samples. With `alpha`
+    // (one byte per pixel of the frame), the mean of the samples a surface covers (finite
+    // depth), the background where none does, and their share as alpha, 0..255.
+    void resolve_rows(int y_begin, int y_end, Framebuffer& frame, Rgb background, std::uint8_t* alpha) const noexcept;
+
+private:
+    [[nodiscard]] std::size_t index(int x, int y) const noexcept {
+        return (static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)) * static_cast<std::size_t>(samples_);
+    }
+
+    int width_ = 0;
+    int height_ = 0;
+    int samples_ = 1;
+    std::array<float, 256> linear_{};  // each sRGB byte in linear light
+    std::vector<std::uint8_t> colours_;
+    std::vector<float> depths_;
+};
+
+}  // namespace raster::detail
