@@ -158,18 +158,19 @@ std::vector<Case> corpus() {
     Case mesh{"shared edges", {}};
     std::uniform_real_distribution<double> jitter(-1.2, 1.2);
     for (int f = 0; f < 40; ++f) {
-        constexpr int kCells = 6;
+        constexpr std::size_t kCells = 6;
         const double cell = (kSide - 8.0) / kCells;
         std::vector<std::vector<glm::dvec2>> grid(kCells + 1, std::vector<glm::dvec2>(kCells + 1));
-        for (int j = 0; j <= kCells; ++j) {
-            for (int i = 0; i <= kCells; ++i) {
+        for (std::size_t j = 0; j <= kCells; ++j) {
+            for (std::size_t i = 0; i <= kCells; ++i) {
                 const bool border = i == 0 || j == 0 || i == kCells || j == kCells;
-                grid[j][i] = {on_grid(4.3 + i * cell + (border ? 0.0 : jitter(random))), on_grid(4.3 + j * cell + (border ? 0.0 : jitter(random)))};
+                grid[j][i] = {on_grid(4.3 + static_cast<double>(i) * cell + (border ? 0.0 : jitter(random))),
+                              on_grid(4.3 + static_cast<double>(j) * cell + (border ? 0.0 : jitter(random)))};
             }
         }
         std::vector<Triangle> frame;
-        for (int j = 0; j < kCells; ++j) {
-            for (int i = 0; i < kCells; ++i) {
+        for (std::size_t j = 0; j < kCells; ++j) {
+            for (std::size_t i = 0; i < kCells; ++i) {
                 frame.push_back({grid[j][i], grid[j][i + 1], grid[j + 1][i + 1]});
                 frame.push_back({grid[j][i], grid[j + 1][i + 1], grid[j + 1][i]});
             }

@@ -3,6 +3,7 @@
 // (vertex stage, clipping, culling, fill, interpolation, depth, every shader). It must never
 // crash or write outside its buffers (the sanitizers watch), and its invariants must hold.
 #include <raster/rasterize/draw_mesh.hpp>
+#include <raster/render/samples.hpp>
 #include <raster/render/scene.hpp>
 
 #include <cmath>
@@ -111,13 +112,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     } catch (const std::invalid_argument&) {
         return 0;  // a camera refused with a clear error is a fine outcome
     }
+    // Now and then more samples: multisampling's own coverage, depth and resolve.
+    const int samples = input.ConsumeBool() ? raster::kSampleCounts[static_cast<std::size_t>(input.ConsumeIntegralInRange(1, 4))] : 1;
     const auto draw = [&](raster::Framebuffer& image) {
-        return pinhole ? raster::render(image, *pinhole, depth) : raster::render(image, scene, depth);
+        return pinhole ? raster::render(image, *pinhole, depth, {.samples = samples}) : raster::render(image, scene, depth, {.samples = samples});
     };
     const std::size_t drawn = draw(first);
     // Deterministic: the same scene draws the same pixels again, into a buffer that held others.
     second.clear({9, 9, 9});
     if (draw(second) != drawn || !(first == second)) std::abort();
+    if (samples > 1) return 0;  // the samples keep their own depths; the checks below are of the depth buffer
     // Depth is prepared exactly when the rule asks for it, and then holds no NaN.
     if (depth.allocated() != raster::needs_depth(scene)) std::abort();
     if (depth.allocated()) {

@@ -64,18 +64,7 @@ void shade_triangle_samples(SampleBuffer& target, bool depth_test, const std::ar
         if (constant) return constant_colour;
         if constexpr (kMode == Interpolation::perspective) {
             const double q1 = a * inv1, q2 = b * inv2, sum = (1.0 - a - b) * inv0 + q1 + q2;
-            const double w = 1.0 / sum;
-            const double t1 = q1 * w, t2 = q2 * w;
-            const Varying varying = base + along1 * static_cast<float>(t1) + along2 * static_cast<float>(t2);
-            if constexpr (NeedsFootprint<Shader>) {
-                const auto change = [&](double da, double db) {
-                    const double dsum = (-da - db) * inv0 + da * inv1 + db * inv2;
-                    return along1 * static_cast<float>((da * inv1 - t1 * dsum) / sum) + along2 * static_cast<float>((db * inv2 - t2 * dsum) / sum);
-                };
-                return shader.pixel(varying, change(w1.per_pixel_x(), w2.per_pixel_x()), change(w1.per_pixel_y(), w2.per_pixel_y()));
-            } else {
-                return shader.pixel(varying);
-            }
+            return perspective_colour(shader, base, along1, along2, {w1, w2, inv0, inv1, inv2}, q1, q2, sum, 1.0 / sum);
         } else {
             const Varying varying = base + along1 * static_cast<float>(a) + along2 * static_cast<float>(b);
             if constexpr (NeedsFootprint<Shader>) {

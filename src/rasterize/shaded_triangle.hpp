@@ -67,6 +67,34 @@ inline std::array<WeightPlane, 2> weight_planes(SubpixelPoint p0, SubpixelPoint 
     return {WeightPlane{x0, y0, by / cross, -bx / cross}, WeightPlane{x0, y0, -ay / cross, ax / cross}};
 }
 
+// How a triangle's attributes vary in perspective: the screen weights of corners 1 and 2 and
+// the reciprocal view depths of the three corners.
+struct PerspectiveWeights {
+    const WeightPlane& w1;
+    const WeightPlane& w2;
+    double inv0, inv1, inv2;
+};
+
+// The shader's colour at a point of a perspective triangle whose corner weights through 1/w are
+// q1 / sum and q2 / sum (sum = 1 / w, the view depth w): the Varying there and, for a shader that
+// filters, its change along a screen step in x and in y.
+template <typename Shader, typename Varying = typename Shader::Varying>
+Rgb perspective_colour(const Shader& shader, const Varying& base, const Varying& along1, const Varying& along2,
+                       const PerspectiveWeights& p, double q1, double q2, double sum, double w) {
+    const double t1 = q1 * w, t2 = q2 * w;
+    const Varying varying = base + along1 * static_cast<float>(t1) + along2 * static_cast<float>(t2);
+    if constexpr (NeedsFootprint<Shader>) {
+        // The derivative of (q_k / sum) along a screen step that moves a by da and b by db.
+        const auto change = [&](double da, double db) {
+            const double dsum = (-da - db) * p.inv0 + da * p.inv1 + db * p.inv2;
+            return along1 * static_cast<float>((da * p.inv1 - t1 * dsum) / sum) + along2 * static_cast<float>((db * p.inv2 - t2 * dsum) / sum);
+        };
+        return shader.pixel(varying, change(p.w1.per_pixel_x(), p.w2.per_pixel_x()), change(p.w1.per_pixel_y(), p.w2.per_pixel_y()));
+    } else {
+        return shader.pixel(varying);
+    }
+}
+
 // How attributes vary across the screen: linearly for an orthographic view; through 1/w for a
 // perspective one, where each corner's depth is its view depth w > 0.
 enum class Interpolation { screen_linear, perspective };
@@ -125,20 +153,7 @@ void shade_triangle(Framebuffer& colour, DepthBuffer* depth,
                     out[0] = constant_colour.r, out[1] = constant_colour.g, out[2] = constant_colour.b;
                     continue;
                 }
-                const double t1 = q1 * w, t2 = q2 * w;
-                const Varying varying = base + along1 * static_cast<float>(t1) + along2 * static_cast<float>(t2);
-                Rgb c;
-                if constexpr (NeedsFootprint<Shader>) {
-                    // The derivative of (q_k / sum) along a screen step that moves a by da and b by db.
-                    const auto change = [&](double da, double db) {
-                        const double dsum = (-da - db) * inv0 + da * inv1 + db * inv2;
-                        return along1 * static_cast<float>((da * inv1 - t1 * dsum) / sum) +
-                               along2 * static_cast<float>((db * inv2 - t2 * dsum) / sum);
-                    };
-                    c = shader.pixel(varying, change(w1.per_pixel_x(), w2.per_pixel_x()), change(w1.per_pixel_y(), w2.per_pixel_y()));
-                } else {
-                    c = shader.pixel(varying);
-                }
+                const Rgb c = perspective_colour(shader, base, along1, along2, {w1, w2, inv0, inv1, inv2}, q1, q2, sum, w);
                 out[0] = c.r;
                 out[1] = c.g;
                 out[2] = c.b;
