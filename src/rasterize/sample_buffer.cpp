@@ -8,10 +8,6 @@
 
 namespace raster::detail {
 
-SampleBuffer::SampleBuffer() {
-    for (int byte = 0; byte < 256; ++byte) linear_[static_cast<std::size_t>(byte)] = static_cast<float>(linear_from_srgb_channel(byte / 255.0));
-}
-
 void SampleBuffer::resize(int width, int height, int samples) {
     width_ = width, height_ = height, samples_ = samples;
     const std::size_t count = static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * static_cast<std::size_t>(samples);
@@ -33,6 +29,7 @@ void SampleBuffer::clear_rows(int y_begin, int y_end, Rgb background) noexcept {
 void SampleBuffer::resolve_rows(int y_begin, int y_end, Framebuffer& frame, Rgb background, std::uint8_t* alpha) const noexcept {
     std::uint8_t* out = frame.pixels();
     const auto n = static_cast<std::size_t>(samples_);
+    const std::array<float, 256>& linear = linear_from_srgb_bytes();
     for (int y = std::max(y_begin, 0); y < std::min(y_end, height_); ++y) {
         for (int x = 0; x < width_; ++x) {
             const std::size_t first = index(x, y);
@@ -54,7 +51,7 @@ void SampleBuffer::resolve_rows(int y_begin, int y_end, Framebuffer& frame, Rgb 
             std::size_t counted = 0;
             for (std::size_t s = 0; s < n; ++s) {
                 if (alpha != nullptr && std::isinf(depths_[first + s])) continue;  // the background shows through
-                for (std::size_t c = 0; c < 3; ++c) sum[c] += linear_[colours_[(first + s) * 3 + c]];
+                for (std::size_t c = 0; c < 3; ++c) sum[c] += linear[colours_[(first + s) * 3 + c]];
                 ++counted;
             }
             if (counted == 0) {

@@ -2,7 +2,6 @@
 
 #include <raster/rasterize/framebuffer.hpp>
 
-#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -13,7 +12,6 @@ namespace raster::detail {
 
 class SampleBuffer {
 public:
-    SampleBuffer();
     // Keeps its memory when the size does not grow; the contents are undefined until cleared.
     void resize(int width, int height, int samples);
     [[nodiscard]] int width() const noexcept { return width_; }
@@ -39,7 +37,6 @@ private:
     int width_ = 0;
     int height_ = 0;
     int samples_ = 1;
-    std::array<float, 256> linear_{};  // each sRGB byte in linear light
     std::vector<std::uint8_t> colours_;
     std::vector<float> depths_;
 };

@@ -11,7 +11,6 @@ namespace raster::detail {
 SampleResolve::SampleResolve(int width, int height, bool with_alpha)
     : width_(width), height_(height), with_alpha_(with_alpha),
       sums_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3, 0.0F) {
-    for (int byte = 0; byte < 256; ++byte) linear_[static_cast<std::size_t>(byte)] = static_cast<float>(linear_from_srgb_channel(byte / 255.0));
     if (with_alpha_) covered_.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0);
 }
 
@@ -20,12 +19,13 @@ void SampleResolve::add(const Framebuffer& pass, std::span<const std::uint8_t> c
     const std::size_t pixels = static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_);
     if (with_alpha_ && coverage.size() != pixels) throw std::invalid_argument("a sample pass needs its coverage for a transparent frame");
     const std::uint8_t* bytes = pass.bytes().data();
+    const std::array<float, 256>& linear = linear_from_srgb_bytes();
     for (std::size_t i = 0; i < pixels; ++i) {
         if (with_alpha_) {
             if (coverage[i] == 0) continue;
             ++covered_[i];
         }
-        for (std::size_t c = 0; c < 3; ++c) sums_[i * 3 + c] += linear_[bytes[i * 3 + c]];
+        for (std::size_t c = 0; c < 3; ++c) sums_[i * 3 + c] += linear[bytes[i * 3 + c]];
     }
     ++passes_;
 }

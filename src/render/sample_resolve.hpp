@@ -2,7 +2,6 @@
 
 #include <raster/rasterize/framebuffer.hpp>
 
-#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -26,7 +25,6 @@ private:
     int height_;
     bool with_alpha_;
     int passes_ = 0;
-    std::array<float, 256> linear_{};  // each sRGB byte in linear light
     std::vector<float> sums_;          // three per pixel
     std::vector<std::uint16_t> covered_;
 };

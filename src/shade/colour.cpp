@@ -58,9 +58,19 @@ double srgb_from_linear_channel(double linear) noexcept {
     return linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
 }
 
+const std::array<float, 256>& linear_from_srgb_bytes() noexcept {
+    // Immutable after its first use, like the encoding thresholds.
+    static const std::array<float, 256> table = [] {
+        std::array<float, 256> linear{};
+        for (std::size_t b = 0; b < linear.size(); ++b) linear[b] = static_cast<float>(linear_from_srgb_channel(static_cast<double>(b) / 255.0));
+        return linear;
+    }();
+    return table;
+}
+
 LinearRgb linear_from_srgb(Rgb colour) noexcept {
-    const auto channel = [](std::uint8_t c) { return static_cast<float>(linear_from_srgb_channel(c / 255.0)); };
-    return {channel(colour.r), channel(colour.g), channel(colour.b)};
+    const std::array<float, 256>& linear = linear_from_srgb_bytes();
+    return {linear[colour.r], linear[colour.g], linear[colour.b]};
 }
 
 std::uint8_t srgb_byte_from_linear(float linear) noexcept { return encode(linear, thresholds()); }

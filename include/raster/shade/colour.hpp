@@ -2,6 +2,7 @@
 
 #include <raster/rasterize/framebuffer.hpp>
 
+#include <array>
 #include <cstdint>
 
 // Colours in linear light, and the exact sRGB transfer functions between them and the 8-bit
@@ -28,6 +29,9 @@ struct LinearRgb {
 // Its inverse: 12.92 v up to 0.0031308, else 1.055 v^(1/2.4) - 0.055.
 [[nodiscard]] double srgb_from_linear_channel(double linear) noexcept;
 
+// Each sRGB byte b in linear light, linear_from_srgb_channel(b / 255) as a float: a table for
+// loops that decode many bytes (the resolve of anti-aliased samples).
+[[nodiscard]] const std::array<float, 256>& linear_from_srgb_bytes() noexcept;
 // A byte colour in linear light.
 [[nodiscard]] LinearRgb linear_from_srgb(Rgb colour) noexcept;
 
