@@ -1,7 +1,7 @@
 # Draws gl-detail.svg, gl-resolution.svg and gl-ratio.svg from tools/bench-gl.sh's gl.csv.
 if (!exists("dir")) dir = "doc/bench"
 set datafile separator ","
-set terminal svg size 900,520 dynamic enhanced font "sans,12" background "white"
+set terminal svg size 1100,560 dynamic enhanced font "sans,12" background "white"
 set grid lw 0.5 lc "#dddddd"
 set key top right box opaque
 set logscale xy
@@ -10,10 +10,10 @@ file = sprintf("%s/gl.csv", dir)
 set output sprintf("%s/gl-detail.svg", dir)
 set title "Tumbling torus at 800 x 600 by facet count: raster against llvmpipe" font ",14"
 set xlabel "facets"
-plot file using ($2 == 800 && strcol(1)[1:5] eq "torus" ? $4 : 1/0):5 every ::1 with linespoints lw 2 pt 7 lc "#d62728" title "raster, 1 thread", \
-     file using ($2 == 800 && strcol(1)[1:5] eq "torus" ? $4 : 1/0):6 every ::1 with linespoints lw 2 pt 5 lc "#ff9896" title "raster, all cores", \
-     file using ($2 == 800 && strcol(1)[1:5] eq "torus" ? $4 : 1/0):7 every ::1 with linespoints lw 2 pt 9 lc "#1f77b4" title "llvmpipe, 1 thread", \
-     file using ($2 == 800 && strcol(1)[1:5] eq "torus" ? $4 : 1/0):8 every ::1 with linespoints lw 2 pt 11 lc "#aec7e8" title "llvmpipe, default threads"
+plot file using ($2 == 800 && strcol(1)[1:5] eq "torus" && strstrt(strcol(1), " ") == 0 ? $4 : 1/0):5 every ::1 with linespoints lw 2 pt 7 lc "#d62728" title "raster, 1 thread", \
+     file using ($2 == 800 && strcol(1)[1:5] eq "torus" && strstrt(strcol(1), " ") == 0 ? $4 : 1/0):6 every ::1 with linespoints lw 2 pt 5 lc "#ff9896" title "raster, all cores", \
+     file using ($2 == 800 && strcol(1)[1:5] eq "torus" && strstrt(strcol(1), " ") == 0 ? $4 : 1/0):7 every ::1 with linespoints lw 2 pt 9 lc "#1f77b4" title "llvmpipe, 1 thread", \
+     file using ($2 == 800 && strcol(1)[1:5] eq "torus" && strstrt(strcol(1), " ") == 0 ? $4 : 1/0):8 every ::1 with linespoints lw 2 pt 11 lc "#aec7e8" title "llvmpipe, default threads"
 set output sprintf("%s/gl-resolution.svg", dir)
 set title "Tumbling torus(24, 16) by image size: raster against llvmpipe" font ",14"
 set xlabel "pixels"

@@ -3,8 +3,8 @@
 # interleaved, REPETITIONS times (default 3): raster on 1 thread and on every core, llvmpipe with
 # LP_NUM_THREADS=0 (one thread) and with its default. Writes doc/bench/gl-runs.csv (every run),
 # doc/bench/gl.csv (medians and ratios), doc/bench/gl.md (the table) and doc/bench/gl-*.svg.
-# Agreement: unlit cases, the share of covered pixels equal on both sides; ptah (textured and
-# lit), the share within 2 levels on every channel. Also writes doc/images/bench-ptah-*.webp.
+# Agreement (at one sample): unlit cases, the share of covered pixels equal on both sides; the lit
+# scenes (ptah, point-lights, flythrough), the share within 2 levels on every channel. Also writes doc/images/bench-ptah-*.webp.
 # Run by `tools/bootstrap.sh bench`, which builds build/release/bin/raster-vs-gl first.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -12,25 +12,30 @@ repetitions="${1:-3}"
 bin=build/release/bin/raster-vs-gl
 out=doc/bench
 mkdir -p "$out"
-# case width height frames; each sweep in consecutive rows, so that the charts join its points
+# case width height frames samples; each sweep in consecutive rows, so that the charts join its
+# points; then every case up to 1080p again at 4 samples per pixel (beyond it, 4 samples of an
+# 8K frame take a gigabyte on each side).
 cases=(
-    "torus-16 800 600 45" "torus-8 800 600 120" "torus-4 800 600 360" "torus-2 800 600 720"
-    "torus-1 800 600 1080" "torus-1 1280 720 540" "torus-1 1920 1080 270" "torus-1 3840 2160 60" "torus-1 7680 4320 15"
-    "cube 800 600 1440" "ptah 800 600 120" "ptah 1920 1080 60"
+    "torus-16 800 600 45 1" "torus-8 800 600 120 1" "torus-4 800 600 360 1" "torus-2 800 600 720 1"
+    "torus-1 800 600 1080 1" "torus-1 1280 720 540 1" "torus-1 1920 1080 270 1" "torus-1 3840 2160 60 1" "torus-1 7680 4320 15 1"
+    "cube 800 600 1440 1" "ptah 800 600 120 1" "ptah 1920 1080 60 1" "point-lights 800 600 180 1" "flythrough 800 600 24 1"
+    "torus-16 800 600 20 4" "torus-8 800 600 45 4" "torus-4 800 600 120 4" "torus-2 800 600 240 4"
+    "torus-1 800 600 360 4" "torus-1 1280 720 180 4" "torus-1 1920 1080 90 4"
+    "cube 800 600 480 4" "ptah 800 600 60 4" "ptah 1920 1080 24 4" "point-lights 800 600 90 4" "flythrough 800 600 24 4"
 )
 runs="$out/gl-runs.csv"
 echo "repetition,side,case,width,height,facets,threads,frames,seconds,fps,agreement" > "$runs"
 for ((r = 1; r <= repetitions; r++)); do
     for c in "${cases[@]}"; do
-        read -r name width height frames <<<"$c"
-        common=(--case "$name" --width "$width" --height "$height" --frames "$frames")
+        read -r name width height frames samples <<<"$c"
+        common=(--case "$name" --width "$width" --height "$height" --frames "$frames" --samples "$samples")
         agreement=()
-        [ "$r" -eq 1 ] && [ "$width" -le 1920 ] && agreement=(--agreement)
+        [ "$r" -eq 1 ] && [ "$width" -le 1920 ] && [ "$samples" -eq 1 ] && agreement=(--agreement)
         echo "$r,$("$bin" --side raster --threads 1 "${common[@]}" "${agreement[@]}")" >> "$runs"
         echo "$r,$("$bin" --side raster --threads 0 "${common[@]}")" >> "$runs"
         echo "$r,$(LP_NUM_THREADS=0 "$bin" --side gl "${common[@]}" | sed 's/^gl,/gl1,/')" >> "$runs"
         echo "$r,$(env -u LP_NUM_THREADS "$bin" --side gl "${common[@]}" | sed 's/^gl,/glN,/')" >> "$runs"
-        echo "bench-gl: round $r, $name ${width}x$height" >&2
+        echo "bench-gl: round $r, $name ${width}x$height, $samples sample(s)" >&2
     done
 done
 # Medians per case and side, then one row per case: fps of each, ratios, agreement. A ratio is
@@ -72,6 +77,15 @@ END {
     echo "| case | size | facets | raster, 1 thread | llvmpipe, 1 thread | ratio | raster, all cores | llvmpipe, default | ratio | pixels that agree |"
     echo "|---|---|---|---|---|---|---|---|---|---|"
     awk -F, 'NR > 1 { printf "| %s | %sx%s | %s | %s | %s | %s (%s–%s) | %s | %s | %s (%s–%s) | %s |\n", $1, $2, $3, $4, $5, $7, $9, $12, $13, $6, $8, $10, $14, $15, ($11 == "") ? "" : sprintf("%.2f %%", 100 * $11) }' "$out/gl.csv"
+    echo
+    echo "What 4 samples per pixel cost: each side's time per frame at 4 samples over its time at 1 (medians, 1 thread each)."
+    echo
+    echo "| case | size | raster, 4x / 1x | llvmpipe, 4x / 1x |"
+    echo "|---|---|---|---|"
+    awk -F, 'NR > 1 { key = $1 "," $2 "," $3; r[key] = $5; g[key] = $7; order[NR] = key }
+        END { for (i = 2; i <= NR; i++) { key = order[i]; split(key, k, ","); if (k[1] ~ / 4x$/) continue
+            four = k[1] " 4x," k[2] "," k[3]; if (!(four in r)) continue
+            printf "| %s | %sx%s | %.2f | %.2f |\n", k[1], k[2], k[3], r[key] / r[four], g[key] / g[four] } }' "$out/gl.csv"
 } > "$out/gl.md"
 "$bin" --side raster --case ptah --frames 1 --picture doc/images/bench-ptah >/dev/null
 if command -v gnuplot >/dev/null; then gnuplot -e "dir='$out'" bench/gl_charts.gp; fi

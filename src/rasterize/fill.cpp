@@ -1,5 +1,7 @@
 #include <raster/rasterize/fill.hpp>
 
+#include "rasterize/edge_function.hpp"
+
 #include <algorithm>
 #include <cstdlib>
 #include <array>
@@ -7,54 +9,12 @@
 namespace raster {
 namespace {
 
-// floor(n / d) for d > 0. Operands that fit 32 bits, the common case for small polygons, take
-// the 32-bit divide, which is several times faster than the 64-bit one on x86-64.
-std::int64_t floor_div(std::int64_t n, std::int64_t d) {
-    if (n == static_cast<std::int32_t>(n) && d == static_cast<std::int32_t>(d)) {
-        const auto n32 = static_cast<std::int32_t>(n);
-        const auto d32 = static_cast<std::int32_t>(d);
-        const std::int32_t q = n32 / d32;
-        return (q * d32 != n32 && n32 < 0) ? q - 1 : q;
-    }
-    const std::int64_t q = n / d;
-    return (q * d != n && n < 0) ? q - 1 : q;
-}
-
 // The first and last pixel whose centre lies in [low, high] (subpixel units); an arithmetic
 // shift is a floor division by kSubpixelOne.
 std::int64_t first_pixel_at_or_after(std::int64_t low) { return -((-low) >> kSubpixelBits); }
 std::int64_t last_pixel_at_or_before(std::int64_t high) { return high >> kSubpixelBits; }
 
-// E(i, j) = step_x * i + step_y * j + offset at pixel (i, j), oriented so the inside is E >= bias;
-// bias is 1 on edges that are neither top nor left, so samples exactly on them stay outside.
-struct EdgeFunction {
-    std::int64_t step_x;
-    std::int64_t step_y;
-    std::int64_t offset;
-    std::int64_t bias;
-
-    static EdgeFunction through(SubpixelPoint a, SubpixelPoint b) {
-        const std::int64_t ex = std::int64_t{b.x} - a.x;
-        const std::int64_t ey = std::int64_t{b.y} - a.y;
-        // The inward normal is (-ey, ex): a left edge has it pointing right, a top edge down.
-        const bool top_left = ey < 0 || (ey == 0 && ex > 0);
-        return {-ey * kSubpixelOne, ex * kSubpixelOne, ey * a.x - ex * a.y, top_left ? 0 : 1};
-    }
-};
-
-// Narrows [first, last] to the columns of `row` inside one edge: step_x * i >= need. Solving
-// with one exact division per edge and row measured faster than stepping quotient and remainder
-// from row to row (doc/lab/README.md).
-void clamp_to_edge(const EdgeFunction& edge, std::int64_t row, std::int64_t& first, std::int64_t& last) {
-    const std::int64_t need = edge.bias - (edge.step_y * row + edge.offset);
-    if (edge.step_x > 0) {
-        first = std::max(first, -floor_div(-need, edge.step_x));
-    } else if (edge.step_x < 0) {
-        last = std::min(last, floor_div(-need, -edge.step_x));
-    } else if (need > 0) {
-        last = first - 1;  // a horizontal edge with the whole row outside it
-    }
-}
+using detail::EdgeFunction;
 
 constexpr std::size_t kMaxCorners = 8;
 
@@ -103,7 +63,7 @@ std::int64_t rasterize_convex(std::span<const SubpixelPoint> corners, PixelRect 
     for (std::int64_t row = first_row; row <= last_row; ++row) {
         std::int64_t first = clip.x;
         std::int64_t last = std::int64_t{clip.x} + clip.width - 1;
-        for (std::size_t i = 0; i < edge_count; ++i) clamp_to_edge(edges[i], row, first, last);
+        for (std::size_t i = 0; i < edge_count; ++i) detail::clamp_to_edge(edges[i], row, first, last);
         if (first <= last) visit({static_cast<int>(row), static_cast<int>(first), static_cast<int>(last + 1)});
     }
     return last_row - first_row + 1;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "rasterize/sample_buffer.hpp"
+#include "rasterize/sample_coverage.hpp"
 #include "rasterize/shaded_triangle.hpp"
 
 #include <algorithm>
@@ -15,18 +16,6 @@
 // (doc/conventions.md#samples). Coverage is the one-sample fill of the triangle moved by each
 // sample's offset, so it keeps the fill rule and is exactly what a pass at that position covers.
 namespace raster::detail {
-
-// A sample position in whole subpixels and in pixels: the offsets are multiples of 1/16 pixel.
-struct SampleOffset {
-    std::int32_t x_subpixels;
-    std::int32_t y_subpixels;
-    double x;
-    double y;
-};
-
-// The most rows one call draws at a time, and the most samples a pixel has.
-inline constexpr int kMultisampleBand = 64;
-inline constexpr int kMaxSamples = 16;
 
 // Draws one triangle facing the camera into rows `rows` of `target`; depth is tested per sample
 // when `depth_test`, and written per sample always (a transparent frame reads coverage from it).
@@ -77,67 +66,41 @@ void shade_triangle_samples(SampleBuffer& target, bool depth_test, const std::ar
         }
     };
 
+    const SampleCoverage coverage(points, offsets);
     const int count = static_cast<int>(std::min<std::size_t>(offsets.size(), kMaxSamples));
-    const std::uint32_t all = (std::uint32_t{1} << count) - 1;
-    // Each sample's span on each row of the band: the triangle moved by minus its offset, filled at pixel centres.
-    std::array<std::array<std::int32_t, kMultisampleBand>, kMaxSamples> begins{}, ends{};
-    for (int band_y = rows.y; band_y < rows.y + rows.height; band_y += kMultisampleBand) {
-        const PixelRect band{rows.x, band_y, rows.width, std::min(kMultisampleBand, rows.y + rows.height - band_y)};
-        for (int s = 0; s < count; ++s) {
-            std::fill_n(begins[static_cast<std::size_t>(s)].begin(), band.height, 0);
-            std::fill_n(ends[static_cast<std::size_t>(s)].begin(), band.height, 0);
-            const SampleOffset& o = offsets[static_cast<std::size_t>(s)];
-            const std::array<SubpixelPoint, 3> moved{SubpixelPoint{points[0].x - o.x_subpixels, points[0].y - o.y_subpixels},
-                                                     SubpixelPoint{points[1].x - o.x_subpixels, points[1].y - o.y_subpixels},
-                                                     SubpixelPoint{points[2].x - o.x_subpixels, points[2].y - o.y_subpixels}};
-            rasterize_convex(moved, band, [&](Span span) {
-                begins[static_cast<std::size_t>(s)][static_cast<std::size_t>(span.y - band.y)] = span.x_begin;
-                ends[static_cast<std::size_t>(s)][static_cast<std::size_t>(span.y - band.y)] = span.x_end;
-            });
-        }
-        for (int r = 0; r < band.height; ++r) {
-            std::int32_t low = std::numeric_limits<std::int32_t>::max(), high = std::numeric_limits<std::int32_t>::min();
+    const std::uint32_t all = coverage.all();
+    coverage.rows(rows, [&](int y, int begin, int end, int inner_begin, int inner_end) {
+        for (int x = begin; x < end; ++x) {
+            // Inside the inner columns every sample is covered: no test per sample there.
+            const std::uint32_t covered = x >= inner_begin && x < inner_end ? all : coverage.at(x, y);
+            if (covered == 0) continue;
+            const double a = w1.at(x, y), b = w2.at(x, y);
+            float* nearest = target.depths(x, y);
+            std::uint32_t passed = 0;
+            double sum_a = 0.0, sum_b = 0.0;
+            int inside = 0;
             for (int s = 0; s < count; ++s) {
-                const auto b = begins[static_cast<std::size_t>(s)][static_cast<std::size_t>(r)], e = ends[static_cast<std::size_t>(s)][static_cast<std::size_t>(r)];
-                if (b < e) low = std::min(low, b), high = std::max(high, e);
+                if ((covered & (std::uint32_t{1} << s)) == 0) continue;
+                const SampleOffset& o = offsets[static_cast<std::size_t>(s)];
+                const double as = a + o.x * w1.per_pixel_x() + o.y * w1.per_pixel_y();
+                const double bs = b + o.x * w2.per_pixel_x() + o.y * w2.per_pixel_y();
+                sum_a += as, sum_b += bs, ++inside;
+                const float z = depth_at(as, bs);
+                if (depth_test && z > nearest[s]) continue;  // something nearer is already there
+                nearest[s] = z;
+                passed |= std::uint32_t{1} << s;
             }
-            const int y = band.y + r;
-            for (std::int32_t x = low; x < high; ++x) {
-                std::uint32_t covered = 0;
-                for (int s = 0; s < count; ++s) {
-                    if (x >= begins[static_cast<std::size_t>(s)][static_cast<std::size_t>(r)] && x < ends[static_cast<std::size_t>(s)][static_cast<std::size_t>(r)]) {
-                        covered |= std::uint32_t{1} << s;
-                    }
-                }
-                if (covered == 0) continue;
-                const double a = w1.at(x, y), b = w2.at(x, y);
-                float* nearest = target.depths(x, y);
-                std::uint32_t passed = 0;
-                double sum_a = 0.0, sum_b = 0.0;
-                int inside = 0;
-                for (int s = 0; s < count; ++s) {
-                    if ((covered & (std::uint32_t{1} << s)) == 0) continue;
-                    const SampleOffset& o = offsets[static_cast<std::size_t>(s)];
-                    const double as = a + o.x * w1.per_pixel_x() + o.y * w1.per_pixel_y();
-                    const double bs = b + o.x * w2.per_pixel_x() + o.y * w2.per_pixel_y();
-                    sum_a += as, sum_b += bs, ++inside;
-                    const float z = depth_at(as, bs);
-                    if (depth_test && z > nearest[s]) continue;  // something nearer is already there
-                    nearest[s] = z;
-                    passed |= std::uint32_t{1} << s;
-                }
-                if (passed == 0) continue;
-                // Shaded once: at the centre when every sample is inside, else at the covered samples'
-                // centroid, which lies inside the triangle, so nothing is read from beyond its edges.
-                const Rgb c = covered == all ? colour_at(a, b) : colour_at(sum_a / inside, sum_b / inside);
-                std::uint8_t* out = target.colours(x, y);
-                for (int s = 0; s < count; ++s) {
-                    if ((passed & (std::uint32_t{1} << s)) == 0) continue;
-                    out[s * 3] = c.r, out[s * 3 + 1] = c.g, out[s * 3 + 2] = c.b;
-                }
+            if (passed == 0) continue;
+            // Shaded once: at the centre when every sample is inside, else at the covered samples'
+            // centroid, which lies inside the triangle, so nothing is read from beyond its edges.
+            const Rgb c = covered == all ? colour_at(a, b) : colour_at(sum_a / inside, sum_b / inside);
+            std::uint8_t* out = target.colours(x, y);
+            for (int s = 0; s < count; ++s) {
+                if ((passed & (std::uint32_t{1} << s)) == 0) continue;
+                out[s * 3] = c.r, out[s * 3 + 1] = c.g, out[s * 3 + 2] = c.b;
             }
         }
-    }
+    });
 }
 
 }  // namespace raster::detail

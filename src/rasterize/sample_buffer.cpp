@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 namespace raster::detail {
@@ -19,8 +20,14 @@ void SampleBuffer::clear_rows(int y_begin, int y_end, Rgb background) noexcept {
     y_begin = std::max(y_begin, 0), y_end = std::min(y_end, height_);
     if (y_begin >= y_end) return;
     const std::size_t begin = index(0, y_begin), end = index(0, y_end);
-    for (std::size_t i = begin; i < end; ++i) {
-        colours_[i * 3] = background.r, colours_[i * 3 + 1] = background.g, colours_[i * 3 + 2] = background.b;
+    // One sample written, then the filled part copied onto the rest, doubling: memcpy's speed.
+    std::uint8_t* const first = colours_.data() + begin * 3;
+    const std::size_t bytes = (end - begin) * 3;
+    first[0] = background.r, first[1] = background.g, first[2] = background.b;
+    for (std::size_t done = 3; done < bytes;) {
+        const std::size_t copied = std::min(done, bytes - done);
+        std::memcpy(first + done, first, copied);
+        done += copied;
     }
     std::fill(depths_.begin() + static_cast<std::ptrdiff_t>(begin), depths_.begin() + static_cast<std::ptrdiff_t>(end),
               std::numeric_limits<float>::infinity());
@@ -37,11 +44,9 @@ void SampleBuffer::resolve_rows(int y_begin, int y_end, Framebuffer& frame, Rgb 
             std::uint8_t* written = out + pixel * 3;
             const std::uint8_t* own = colours_.data() + first * 3;
             // Inside a surface every sample holds the same colour: it is the pixel's, exactly.
-            bool same = alpha == nullptr || !std::isinf(depths_[first]);
-            for (std::size_t s = 1; s < n && same; ++s) {
-                same = own[s * 3] == own[0] && own[s * 3 + 1] == own[1] && own[s * 3 + 2] == own[2] &&
-                       (alpha == nullptr || !std::isinf(depths_[first + s]));
-            }
+            // The bytes repeat with period 3 exactly when every sample equals the first.
+            bool same = std::memcmp(own + 3, own, (n - 1) * 3) == 0;
+            for (std::size_t s = 0; s < n && same && alpha != nullptr; ++s) same = !std::isinf(depths_[first + s]);
             if (same) {
                 written[0] = own[0], written[1] = own[1], written[2] = own[2];
                 if (alpha != nullptr) alpha[pixel] = 255;
