@@ -75,6 +75,7 @@ void shade_triangle_samples(SampleBuffer& target, bool depth_test, const std::ar
             const std::uint32_t covered = x >= inner_begin && x < inner_end ? all : coverage.at(x, y);
             if (covered == 0) continue;
             const double a = w1.at(x, y), b = w2.at(x, y);
+            target.touch(x, y);
             float* nearest = target.depths(x, y);
             std::uint32_t passed = 0;
             double sum_a = 0.0, sum_b = 0.0;

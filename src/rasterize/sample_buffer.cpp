@@ -5,32 +5,32 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <iterator>
 #include <limits>
 
 namespace raster::detail {
 
 void SampleBuffer::resize(int width, int height, int samples) {
     width_ = width, height_ = height, samples_ = samples;
-    const std::size_t count = static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * static_cast<std::size_t>(samples);
+    const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+    const std::size_t count = pixels * static_cast<std::size_t>(samples);
     colours_.resize(count * 3);
     depths_.resize(count);
+    touched_.resize(pixels);
 }
 
 void SampleBuffer::clear_rows(int y_begin, int y_end, Rgb background) noexcept {
     y_begin = std::max(y_begin, 0), y_end = std::min(y_end, height_);
     if (y_begin >= y_end) return;
-    const std::size_t begin = index(0, y_begin), end = index(0, y_end);
-    // One sample written, then the filled part copied onto the rest, doubling: memcpy's speed.
-    std::uint8_t* const first = colours_.data() + begin * 3;
-    const std::size_t bytes = (end - begin) * 3;
-    first[0] = background.r, first[1] = background.g, first[2] = background.b;
-    for (std::size_t done = 3; done < bytes;) {
-        const std::size_t copied = std::min(done, bytes - done);
-        std::memcpy(first + done, first, copied);
-        done += copied;
-    }
-    std::fill(depths_.begin() + static_cast<std::ptrdiff_t>(begin), depths_.begin() + static_cast<std::ptrdiff_t>(end),
-              std::numeric_limits<float>::infinity());
+    background_ = background;
+    const auto row = [&](int y) { return touched_.begin() + static_cast<std::ptrdiff_t>(y) * width_; };
+    std::fill(row(y_begin), row(y_end), std::uint8_t{0});
+}
+
+void SampleBuffer::fill(std::size_t first) noexcept {
+    std::uint8_t* colour = colours_.data() + first * 3;
+    for (int s = 0; s < samples_; ++s, colour += 3) colour[0] = background_.r, colour[1] = background_.g, colour[2] = background_.b;
+    std::fill_n(depths_.begin() + static_cast<std::ptrdiff_t>(first), samples_, std::numeric_limits<float>::infinity());
 }
 
 void SampleBuffer::resolve_rows(int y_begin, int y_end, Framebuffer& frame, Rgb background, std::uint8_t* alpha) const noexcept {
@@ -42,6 +42,11 @@ void SampleBuffer::resolve_rows(int y_begin, int y_end, Framebuffer& frame, Rgb 
             const std::size_t first = index(x, y);
             const std::size_t pixel = static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x);
             std::uint8_t* written = out + pixel * 3;
+            if (touched_[pixel] == 0) {  // nothing drew here: the background, uncovered
+                written[0] = background.r, written[1] = background.g, written[2] = background.b;
+                if (alpha != nullptr) alpha[pixel] = 0;
+                continue;
+            }
             const std::uint8_t* own = colours_.data() + first * 3;
             // Inside a surface every sample holds the same colour: it is the pixel's, exactly.
             // The bytes repeat with period 3 exactly when every sample equals the first.

@@ -8,6 +8,8 @@
 
 // Multisampling's target: every pixel's samples side by side, each an sRGB colour and a view
 // depth, resolved in linear light into a framebuffer strip by strip (doc/conventions.md#samples).
+// A clear marks pixels untouched instead of writing their samples; a pixel's samples are filled
+// the first time a triangle reaches it, so a frame pays per pixel drawn, not per sample shown.
 namespace raster::detail {
 
 class SampleBuffer {
@@ -18,9 +20,15 @@ public:
     [[nodiscard]] int height() const noexcept { return height_; }
     [[nodiscard]] int samples() const noexcept { return samples_; }
 
-    // Rows [y_begin, y_end): every sample the background, at infinite depth.
+    // Rows [y_begin, y_end): every sample the background, at infinite depth. The background is
+    // the same for every row of a frame.
     void clear_rows(int y_begin, int y_end, Rgb background) noexcept;
-    // The samples of pixel (x, y): samples() colours of three bytes, and samples() depths.
+    // The samples of pixel (x, y): samples() colours of three bytes, and samples() depths, which
+    // `touch` fills (with the clear's values) when the pixel is first drawn after a clear.
+    void touch(int x, int y) noexcept {
+        std::uint8_t& touched = touched_[static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)];
+        if (touched == 0) fill(index(x, y)), touched = 1;
+    }
     [[nodiscard]] std::uint8_t* colours(int x, int y) noexcept { return colours_.data() + index(x, y) * 3; }
     [[nodiscard]] float* depths(int x, int y) noexcept { return depths_.data() + index(x, y); }
 
@@ -34,11 +42,15 @@ private:
         return (static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)) * static_cast<std::size_t>(samples_);
     }
 
+    void fill(std::size_t first) noexcept;
+
     int width_ = 0;
     int height_ = 0;
     int samples_ = 1;
     std::vector<std::uint8_t> colours_;
     std::vector<float> depths_;
+    std::vector<std::uint8_t> touched_;  // per pixel: 1 once its samples hold this frame's values
+    Rgb background_{};
 };
 
 }  // namespace raster::detail
