@@ -32,6 +32,7 @@ set style fill solid 0.9 border -1
 set boxwidth 0.9
 set yrange [0:*]
 set xtics rotate by -30 left
+set rmargin 16  # room for the last rotated label
 set key top left box opaque
 plot file using 9:12:13:xticlabels(sprintf("%s %sx%s", strcol(1), strcol(2), strcol(3))) every ::1 lc "#d62728" title "1 thread each (bar: median round; whisker: range)", \
      file using 10:14:15 every ::1 lc "#ff9896" title "all cores each", \
