@@ -6,7 +6,7 @@
 #include <cstdint>
 
 // The exact edge test behind every fill: an integer function of the pixel that is >= a bias
-// inside the edge, with the top-left rule in the bias (doc/conventions.md#fill-rule).
+// inside the edge, with the top-left rule in the bias (doc/conventions.md#fill).
 namespace raster::detail {
 
 // floor(n / d) for d > 0. Operands that fit 32 bits, the common case for small polygons, take

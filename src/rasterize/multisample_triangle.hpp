@@ -48,23 +48,23 @@ void shade_triangle_samples(SampleBuffer& target, bool depth_test, const std::ar
             return static_cast<float>(z0 + z1 * a + z2 * b);
         }
     };
-    // The shader's colour where the weights are a and b, as shade_triangle computes it at a pixel.
-    const auto colour_at = [&](double a, double b) -> Rgb {
-        if (constant) return constant_colour;
+    // The Varying where the weights are a and b, as shade_triangle computes it at a pixel.
+    const auto varying_at = [&](double a, double b) -> PixelVarying<Varying> {
         if constexpr (kMode == Interpolation::perspective) {
             const double q1 = a * inv1, q2 = b * inv2, sum = (1.0 - a - b) * inv0 + q1 + q2;
-            return perspective_colour(shader, base, along1, along2, {w1, w2, inv0, inv1, inv2}, q1, q2, sum, 1.0 / sum);
+            return perspective_varying<Shader>(base, along1, along2, {w1, w2, inv0, inv1, inv2}, q1, q2, sum, 1.0 / sum);
         } else {
             const Varying varying = base + along1 * static_cast<float>(a) + along2 * static_cast<float>(b);
             if constexpr (NeedsFootprint<Shader>) {
                 const Varying step = along1 * static_cast<float>(w1.per_pixel_x()) + along2 * static_cast<float>(w2.per_pixel_x());
                 const Varying step_y = along1 * static_cast<float>(w1.per_pixel_y()) + along2 * static_cast<float>(w2.per_pixel_y());
-                return shader.pixel(varying, step, step_y);
+                return {varying, step, step_y};
             } else {
-                return shader.pixel(varying);
+                return {varying};
             }
         }
     };
+    LaneBatch<Shader> lanes(shader);  // used by shaders that colour pixels in lanes
 
     const SampleCoverage coverage(points, offsets);
     const int count = static_cast<int>(std::min<std::size_t>(offsets.size(), kMaxSamples));
@@ -94,14 +94,23 @@ void shade_triangle_samples(SampleBuffer& target, bool depth_test, const std::ar
             if (passed == 0) continue;
             // Shaded once: at the centre when every sample is inside, else at the covered samples'
             // centroid, which lies inside the triangle, so nothing is read from beyond its edges.
-            const Rgb c = covered == all ? colour_at(a, b) : colour_at(sum_a / inside, sum_b / inside);
             std::uint8_t* out = target.colours(x, y);
+            Rgb c = constant_colour;
+            if (!constant) {
+                const PixelVarying<Varying> at = covered == all ? varying_at(a, b) : varying_at(sum_a / inside, sum_b / inside);
+                if constexpr (LaneShader<Shader>) {
+                    lanes.add(out, passed, at);
+                    continue;
+                }
+                c = colour_of(shader, at);
+            }
             for (int s = 0; s < count; ++s) {
                 if ((passed & (std::uint32_t{1} << s)) == 0) continue;
                 out[s * 3] = c.r, out[s * 3 + 1] = c.g, out[s * 3 + 2] = c.b;
             }
         }
     });
+    lanes.flush();
 }
 
 }  // namespace raster::detail

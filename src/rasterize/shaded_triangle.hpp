@@ -8,6 +8,8 @@
 #include <raster/camera/ortho_camera.hpp>
 #include <raster/shade/shaders.hpp>
 
+#include "rasterize/lane_batch.hpp"
+
 #include <algorithm>
 #include <array>
 #include <concepts>
@@ -50,13 +52,6 @@ struct WeightPlane {
     [[nodiscard]] double per_pixel_y() const noexcept { return per_subpixel_y * kSubpixelOne; }
 };
 
-// A shader whose pixel stage also takes how its Varying changes per pixel step in x and in y:
-// texture filtering chooses its mip level from that.
-template <typename Shader>
-concept NeedsFootprint = requires(const Shader& shader, const typename Shader::Varying& varying) {
-    shader.pixel(varying, varying, varying);
-};
-
 // Weights of corners 1 and 2: w1 = ((P - p0) x b) / (a x b), w2 = (a x (P - p0)) / (a x b),
 // with a = p1 - p0 and b = p2 - p0; a x b is the exact twice_signed_area, never zero here.
 inline std::array<WeightPlane, 2> weight_planes(SubpixelPoint p0, SubpixelPoint p1, SubpixelPoint p2,
@@ -75,24 +70,41 @@ struct PerspectiveWeights {
     double inv0, inv1, inv2;
 };
 
-// The shader's colour at a point of a perspective triangle whose corner weights through 1/w are
-// q1 / sum and q2 / sum (sum = 1 / w, the view depth w): the Varying there and, for a shader that
-// filters, its change along a screen step in x and in y.
+// The Varying at a point of a perspective triangle whose corner weights through 1/w are q1 / sum
+// and q2 / sum (sum = 1 / w, the view depth w) and, for a shader that filters, its change along
+// a screen step in x and in y.
 template <typename Shader, typename Varying = typename Shader::Varying>
-Rgb perspective_colour(const Shader& shader, const Varying& base, const Varying& along1, const Varying& along2,
-                       const PerspectiveWeights& p, double q1, double q2, double sum, double w) {
+PixelVarying<Varying> perspective_varying(const Varying& base, const Varying& along1, const Varying& along2, const PerspectiveWeights& p,
+                                          double q1, double q2, double sum, double w) {
     const double t1 = q1 * w, t2 = q2 * w;
-    const Varying varying = base + along1 * static_cast<float>(t1) + along2 * static_cast<float>(t2);
+    PixelVarying<Varying> at{base + along1 * static_cast<float>(t1) + along2 * static_cast<float>(t2)};
     if constexpr (NeedsFootprint<Shader>) {
         // The derivative of (q_k / sum) along a screen step that moves a by da and b by db.
         const auto change = [&](double da, double db) {
             const double dsum = (-da - db) * p.inv0 + da * p.inv1 + db * p.inv2;
             return along1 * static_cast<float>((da * p.inv1 - t1 * dsum) / sum) + along2 * static_cast<float>((db * p.inv2 - t2 * dsum) / sum);
         };
-        return shader.pixel(varying, change(p.w1.per_pixel_x(), p.w2.per_pixel_x()), change(p.w1.per_pixel_y(), p.w2.per_pixel_y()));
-    } else {
-        return shader.pixel(varying);
+        at.per_x = change(p.w1.per_pixel_x(), p.w2.per_pixel_x());
+        at.per_y = change(p.w1.per_pixel_y(), p.w2.per_pixel_y());
     }
+    return at;
+}
+
+// The shader's colour at a pixel whose Varying is `at`.
+template <typename Shader, typename Varying = typename Shader::Varying>
+Rgb colour_of(const Shader& shader, const PixelVarying<Varying>& at) {
+    if constexpr (NeedsFootprint<Shader>) {
+        return shader.pixel(at.value, at.per_x, at.per_y);
+    } else {
+        return shader.pixel(at.value);
+    }
+}
+
+// The shader's colour at a point of a perspective triangle, as perspective_varying finds it.
+template <typename Shader, typename Varying = typename Shader::Varying>
+Rgb perspective_colour(const Shader& shader, const Varying& base, const Varying& along1, const Varying& along2,
+                       const PerspectiveWeights& p, double q1, double q2, double sum, double w) {
+    return colour_of(shader, perspective_varying<Shader>(base, along1, along2, p, q1, q2, sum, w));
 }
 
 // How attributes vary across the screen: linearly for an orthographic view; through 1/w for a
@@ -133,6 +145,8 @@ void shade_triangle(Framebuffer& colour, DepthBuffer* depth,
         if (constant) constant_colour = shader.pixel(base);
     }
 
+    LaneBatch<Shader> lanes(shader);  // used by shaders that colour pixels in lanes
+
     if constexpr (kMode == Interpolation::perspective) {
         // Screen weights a, b of corners 1 and 2 become b_k / w_k over their sum: the weights
         // of the surface point seen there; the sum is 1 / w, so the view depth comes with them.
@@ -153,12 +167,18 @@ void shade_triangle(Framebuffer& colour, DepthBuffer* depth,
                     out[0] = constant_colour.r, out[1] = constant_colour.g, out[2] = constant_colour.b;
                     continue;
                 }
-                const Rgb c = perspective_colour(shader, base, along1, along2, {w1, w2, inv0, inv1, inv2}, q1, q2, sum, w);
-                out[0] = c.r;
-                out[1] = c.g;
-                out[2] = c.b;
+                const PixelVarying<Varying> at = perspective_varying<Shader>(base, along1, along2, {w1, w2, inv0, inv1, inv2}, q1, q2, sum, w);
+                if constexpr (LaneShader<Shader>) {
+                    lanes.add(out, 1, at);
+                } else {
+                    const Rgb c = colour_of(shader, at);
+                    out[0] = c.r;
+                    out[1] = c.g;
+                    out[2] = c.b;
+                }
             }
         });
+        lanes.flush();
         return;
     }
     rasterize_convex(points, clip, [&](Span span) {
@@ -174,9 +194,15 @@ void shade_triangle(Framebuffer& colour, DepthBuffer* depth,
                 if (z > nearest[k]) continue;  // something nearer is already there
                 nearest[k] = z;
             }
+            if constexpr (LaneShader<Shader>) {
+                if (!constant) {
+                    lanes.add(out, 1, {varying, step, step_y});  // the steps are constant across the triangle
+                    continue;
+                }
+            }
             Rgb c = constant_colour;
             if constexpr (NeedsFootprint<Shader>) {
-                c = shader.pixel(varying, step, step_y);  // constant across the triangle
+                c = shader.pixel(varying, step, step_y);
             } else {
                 if (!constant) c = shader.pixel(varying);
             }
@@ -185,6 +211,7 @@ void shade_triangle(Framebuffer& colour, DepthBuffer* depth,
             out[2] = c.b;
         }
     });
+    lanes.flush();
 }
 
 // Throws std::invalid_argument for a depth buffer of another size or a mesh whose facets or

@@ -43,6 +43,9 @@ class SpecularPower {
 public:
     explicit SpecularPower(std::optional<float> shininess) noexcept;
     [[nodiscard]] bool enabled() const noexcept { return exponent_.has_value(); }
+    // The exponent, when there is one, and whether it is whole (then raised by squaring).
+    [[nodiscard]] float exponent() const noexcept { return exponent_.value_or(0.0F); }
+    [[nodiscard]] std::optional<unsigned> whole() const noexcept { return whole_; }
     // Inline: it runs at every pixel of a Phong surface, once per light.
     [[nodiscard]] float operator()(float cosine) const noexcept {
         // A dot of unit vectors can exceed 1 by a rounding; above 1 a huge exponent would overflow.

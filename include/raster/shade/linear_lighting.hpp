@@ -2,6 +2,7 @@
 
 #include <raster/shade/colour.hpp>
 #include <raster/rasterize/framebuffer.hpp>
+#include <raster/shade/lanes.hpp>
 #include <raster/shade/lighting.hpp>
 #include <raster/geometry/mesh.hpp>
 
@@ -103,6 +104,10 @@ public:
         const Received light = received(position, normal);
         return material_.emissive + diffuse_colour * light.diffuse + material_.specular * light.specular;
     }
+    // srgb_from_linear(shade(position, unit_or_zero(normal), diffuse colour)) at out.size() <=
+    // kLanes points at once: the same operations in SIMD lanes, so each lane equals it bit for bit.
+    void shade_lanes(const LaneVec3& positions, const LaneVec3& normals, const LaneRgb& diffuse_colours, std::span<Rgb> out) const noexcept;
+
     // The light a surface point receives, before the material's colours: how much diffuse and
     // how much specular light. Zero for a zero normal.
     struct Received {

@@ -1,10 +1,12 @@
 #pragma once
 
 #include <raster/shade/colour.hpp>
+#include <raster/shade/lanes.hpp>
 #include <raster/shade/lighting.hpp>
 #include <raster/shade/linear_lighting.hpp>
 #include <raster/geometry/mesh.hpp>
 
+#include <span>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
@@ -78,6 +80,16 @@ struct LinearPhongShader {
     [[nodiscard]] Varying vertex(const Corner& corner) const noexcept { return {corner.position, corner.normal}; }
     [[nodiscard]] Rgb pixel(const Varying& point) const noexcept {
         return srgb_from_linear(lighting->shade(point.position, unit_or_zero(point.normal)));
+    }
+    // pixel() at up to kLanes points at once, in SIMD lanes (raster/shade/lanes.hpp).
+    void pixels(std::span<const Varying> points, std::span<Rgb> out) const noexcept {
+        LaneVec3 positions, normals;
+        LaneRgb diffuse;
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            put_lane(positions, i, points[i].position), put_lane(normals, i, points[i].normal);
+            put_lane(diffuse, i, lighting->material().diffuse);
+        }
+        lighting->shade_lanes(positions, normals, diffuse, out.first(points.size()));
     }
 };
 

@@ -5,6 +5,7 @@
 #include <raster/shade/shaders.hpp>
 #include <raster/shade/texture.hpp>
 
+#include <span>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
@@ -132,6 +133,16 @@ struct BasicTexturedPhongShader {
     [[nodiscard]] Rgb pixel(const Varying& v, const Varying& per_x, const Varying& per_y) const noexcept {
         const LinearRgb albedo = v.tint.tinted(diffuse.at(v.uv, {per_x.uv, per_y.uv}));
         return srgb_from_linear(lighting->shade(v.position, unit_or_zero(v.normal), albedo));
+    }
+    // pixel() at up to kLanes points at once: the texture read lane by lane, the light in SIMD lanes.
+    void pixels(std::span<const Varying> v, std::span<const Varying> per_x, std::span<const Varying> per_y, std::span<Rgb> out) const noexcept {
+        LaneVec3 positions, normals;
+        LaneRgb albedo;
+        for (std::size_t i = 0; i < v.size(); ++i) {
+            put_lane(positions, i, v[i].position), put_lane(normals, i, v[i].normal);
+            put_lane(albedo, i, v[i].tint.tinted(diffuse.at(v[i].uv, {per_x[i].uv, per_y[i].uv})));
+        }
+        lighting->shade_lanes(positions, normals, albedo, out.first(v.size()));
     }
 };
 

@@ -1,0 +1,97 @@
+// Shading in lanes: every lane of pixels() gives exactly what pixel() gives for that pixel.
+#include <raster/shade/textured_shaders.hpp>
+
+#include <array>
+#include <limits>
+#include <optional>
+#include <random>
+#include <span>
+#include <vector>
+#include <gtest/gtest.h>
+
+using namespace raster;
+
+namespace {
+
+const float kInf = std::numeric_limits<float>::infinity();
+
+// Points a renderer meets and the ones the lighting treats apart: zero and NaN normals, points on
+// a light, offsets too large or too small to square in float, normals of any length.
+std::vector<SurfacePoint> awkward_points(std::span<const PointLight> lights) {
+    std::mt19937 random(17);
+    std::uniform_real_distribution<float> near(-3.0F, 3.0F);
+    std::vector<SurfacePoint> points;
+    for (int i = 0; i < 200; ++i) points.push_back({{near(random), near(random), near(random)}, {near(random), near(random), near(random)}});
+    points.push_back({{0, 0, 0}, {0, 0, 0}});
+    points.push_back({{0, 0, 0}, {std::numeric_limits<float>::quiet_NaN(), 0, 1}});
+    points.push_back({lights[0].position, {0, 1, 0}});
+    points.push_back({{3e20F, 0, 0}, {-1, 0, 0}});
+    points.push_back({lights[1].position + glm::vec3(1e-25F, 0, 0), {0, 1, 0}});
+    points.push_back({{1, 1, 1}, {kInf, 0, 0}});
+    points.push_back({{1, 1, 1}, {1e-30F, 2e-30F, 0}});
+    return points;
+}
+
+// The scalar and lane results of `shade` for every point, lanes filled kLanes at a time and
+// the last batch short.
+template <typename Scalar, typename Lanes>
+void expect_lanes_match(std::span<const SurfacePoint> points, Scalar scalar, Lanes lanes) {
+    for (std::size_t first = 0; first < points.size(); first += kLanes) {
+        const auto batch = points.subspan(first, std::min<std::size_t>(kLanes, points.size() - first));
+        std::array<Rgb, kLanes> out{};
+        lanes(batch, std::span(out).first(batch.size()));
+        for (std::size_t i = 0; i < batch.size(); ++i) {
+            const Rgb expected = scalar(batch[i]);
+            EXPECT_EQ(out[i], expected) << "point " << first + i << " at (" << batch[i].position.x << ", " << batch[i].position.y << ", "
+                                        << batch[i].position.z << ") normal (" << batch[i].normal.x << ", " << batch[i].normal.y << ", "
+                                        << batch[i].normal.z << ")";
+        }
+    }
+}
+
+struct Lights {
+    std::vector<DirectionalLight> suns{{{1, 1, -1}, 0.7F}, {{-1, 0.2F, 0}, 0.3F}};
+    std::vector<PointLight> lamps{{{0.5F, 1.0F, -0.5F}, 1.2F, {0.5F, 0.0F, 1.0F}}, {{-1.0F, -0.5F, 0.0F}, 0.8F, {0.0F, 0.3F, 0.0F}}};
+};
+
+}  // namespace
+
+TEST(Lanes, EveryLaneOfPhongEqualsItsPixelStageInBothViewsAndAnyShininess) {
+    const Lights s;
+    const std::vector<SurfacePoint> points = awkward_points(s.lamps);
+    for (const std::optional<float> shininess : {std::optional<float>{}, std::optional<float>{30.0F}, std::optional<float>{7.5F}}) {
+        const PhongMaterial material = PhongMaterial::from_srgb({7, 37, 52}, {21, 98, 137}, {68, 68, 68}, shininess);
+        const LinearLighting orthographic(material, s.suns, s.lamps, {0, 0, -1});
+        const LinearLighting perspective(material, s.suns, s.lamps, {0, 0, -1}, glm::vec3(0.2F, 0.3F, -4.0F), DepthDarkening{3.0F, 6.0F, 0.2F});
+        for (const LinearLighting* lighting : {&orthographic, &perspective}) {
+            const LinearPhongShader shader{lighting};
+            expect_lanes_match(
+                points, [&](const SurfacePoint& p) { return shader.pixel(p); },
+                [&](std::span<const SurfacePoint> batch, std::span<Rgb> out) { shader.pixels(batch, out); });
+        }
+    }
+}
+
+TEST(Lanes, EveryLaneOfTexturedPhongEqualsItsPixelStage) {
+    const Lights s;
+    Framebuffer image(8, 8);
+    for (int y = 0; y < 8; ++y) {
+        for (int x = 0; x < 8; ++x) image.set_pixel(x, y, {static_cast<std::uint8_t>(30 * x), static_cast<std::uint8_t>(30 * y), 200});
+    }
+    const Texture texture(image);
+    const PhongMaterial material = PhongMaterial::from_srgb({0, 0, 0}, {255, 255, 255}, {40, 40, 40}, 12.0F);
+    const LinearLighting lighting(material, s.suns, s.lamps, {0, 0, -1}, glm::vec3(0.0F, 0.0F, -4.0F));
+    const TexturedPhongShader shader{&lighting, {material.diffuse, &texture, {}}};
+    using Varying = TexturedPhongShader::Varying;
+    const std::vector<SurfacePoint> points = awkward_points(s.lamps);
+    // Texture coordinates and footprints of every size, from magnified to the smallest level.
+    const auto varying = [](const SurfacePoint& p) { return Varying{p.position, p.normal, {p.position.x * 0.37F, p.position.y * 0.21F}, {}}; };
+    const auto step = [](const SurfacePoint& p) { return Varying{{}, {}, {p.position.z * 0.05F, 0.01F}, {}}; };
+    expect_lanes_match(
+        points, [&](const SurfacePoint& p) { return shader.pixel(varying(p), step(p), step(p)); },
+        [&](std::span<const SurfacePoint> batch, std::span<Rgb> out) {
+            std::vector<Varying> v, per_pixel;
+            for (const SurfacePoint& p : batch) v.push_back(varying(p)), per_pixel.push_back(step(p));
+            shader.pixels(v, per_pixel, per_pixel, out);
+        });
+}
