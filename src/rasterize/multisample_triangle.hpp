@@ -92,6 +92,7 @@ void shade_triangle_samples(SampleBuffer& target, bool depth_test, const std::ar
                 passed |= std::uint32_t{1} << s;
             }
             if (passed == 0) continue;
+            if constexpr (DepthOnly<Shader>) continue;
             // Shaded once: at the centre when every sample is inside, else at the covered samples'
             // centroid, which lies inside the triangle, so nothing is read from beyond its edges.
             std::uint8_t* out = target.colours(x, y);

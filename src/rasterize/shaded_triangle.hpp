@@ -8,6 +8,7 @@
 #include <raster/camera/ortho_camera.hpp>
 #include <raster/shade/shaders.hpp>
 
+#include "rasterize/depth_only.hpp"
 #include "rasterize/lane_batch.hpp"
 
 #include <algorithm>
@@ -163,6 +164,7 @@ void shade_triangle(Framebuffer& colour, DepthBuffer* depth,
                     if (z > nearest[x - span.x_begin]) continue;  // something nearer is already there
                     nearest[x - span.x_begin] = z;
                 }
+                if constexpr (DepthOnly<Shader>) continue;
                 if (constant) {
                     out[0] = constant_colour.r, out[1] = constant_colour.g, out[2] = constant_colour.b;
                     continue;
@@ -194,6 +196,7 @@ void shade_triangle(Framebuffer& colour, DepthBuffer* depth,
                 if (z > nearest[k]) continue;  // something nearer is already there
                 nearest[k] = z;
             }
+            if constexpr (DepthOnly<Shader>) continue;
             if constexpr (LaneShader<Shader>) {
                 if (!constant) {
                     lanes.add(out, 1, {varying, step, step_y});  // the steps are constant across the triangle

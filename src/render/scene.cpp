@@ -7,6 +7,8 @@
 
 #include "camera/clipped_facets.hpp"
 #include "geometry/posing.hpp"
+#include "rasterize/depth_only.hpp"
+#include "render/depth_first.hpp"
 #include "rasterize/strip_bins.hpp"
 #include "rasterize/multisample_triangle.hpp"
 #include "rasterize/sample_buffer.hpp"
@@ -110,7 +112,8 @@ struct Multisampling {
 
 template <detail::Interpolation kMode, typename Camera, typename FrontFor>
 std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& scene, DepthBuffer& depth,
-                           std::optional<glm::vec3> eye, detail::WorkerTeam& team, FrontFor front_for, Multisampling multisampling) {
+                           std::optional<glm::vec3> eye, detail::WorkerTeam& team, FrontFor front_for, Multisampling multisampling,
+                           RenderOptions::DepthFirst order) {
     detail::SampleBuffer* const samples = multisampling.buffer;
     const bool depth_test = needs_depth(scene);
     if (depth_test && samples == nullptr) depth.resize(framebuffer.width(), framebuffer.height());  // each strip clears its own rows
@@ -132,50 +135,64 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
         framebuffer.clear_rows(strip.y, strip.y + strip.height, scene.background);
         if (tested != nullptr) tested->clear_rows(strip.y, strip.y + strip.height);
     };
+    // One object through `shader`: posed, put through the front end, binned and drawn strip by strip.
+    const auto draw_object = [&](const SceneObject& object, const auto& shader) {
+        using Shader = std::remove_cvref_t<decltype(shader)>;
+        const bool per_facet = Shader::kFacetNormal || object.mesh->surface == Surface::faceted;
+        detail::check_drawable(framebuffer, tested, *object.mesh);  // before posing reads its facets
+        detail::Posing posing(*object.mesh, object.model, {.vertex_normals = !per_facet, .facet_normals = per_facet});
+        const Mesh& mesh = posing.mesh();  // sized now, filled by the batches below
+        auto front = front_for(mesh, shader);
+        const std::size_t vertices = mesh.positions.size(), facets = mesh.facets.size();
+        const std::size_t vertex_batch = batch_size(vertices), facet_batch = batch_size(facets);
+        team.for_each(batches(vertices, vertex_batch), [&](int b) {
+            const auto [begin, end] = range(b, vertices, vertex_batch);
+            posing.vertices(begin, end);
+            front.vertices(begin, end);  // reads vertex i's posed data only
+        });
+        std::vector<detail::StripBins<typename Shader::Varying>> bins(static_cast<std::size_t>(batches(facets, facet_batch)),
+                                                                      detail::StripBins<typename Shader::Varying>(layout, samples != nullptr ? kSubpixelOne / 2 : 0));
+        std::vector<std::size_t> counted(bins.size());
+        team.for_each(static_cast<int>(bins.size()), [&](int b) {
+            const auto [begin, end] = range(b, facets, facet_batch);
+            detail::StripBins<typename Shader::Varying>& batch = bins[static_cast<std::size_t>(b)];
+            batch.reserve(end - begin);
+            posing.facets(begin, end);  // facet f reads its own posed corners and normal only
+            counted[static_cast<std::size_t>(b)] = front.facets(begin, end, [&](const auto& corners) { batch.add(corners); });
+            batch.finish();
+        });
+        team.for_each(layout.count(), [&](int s) {
+            const PixelRect strip = layout.strip(s);
+            if (!cleared) clear(strip);
+            for (const auto& batch : bins) {
+                batch.for_each_in(s, [&](const auto& corners) {
+                    if (samples != nullptr) {
+                        detail::shade_triangle_samples<Shader, kMode>(*samples, depth_test, corners, shader, strip, multisampling.offsets);
+                    } else {
+                        detail::shade_triangle<Shader, detail::FloatDepth, kMode>(framebuffer, tested, corners, shader, {}, strip);
+                    }
+                });
+            }
+        });
+        cleared = true;
+        return std::accumulate(counted.begin(), counted.end(), std::size_t{0});
+    };
+    const bool depth_pass = depth_test && (order == RenderOptions::DepthFirst::always ||
+                                           (order == RenderOptions::DepthFirst::automatic &&
+                                            detail::depth_first(scene, depth_test, framebuffer.width(), framebuffer.height())));
+    if (depth_pass) {
+        // Every object's depth first, then the shading pass colours only the samples at the
+        // nearest depth: the same picture (the last facet at that depth wins, as it would), with
+        // each pixel shaded once however many surfaces cover it.
+        for (const SceneObject& object : scene.objects) {
+            if (object.mesh) draw_object(object, detail::DepthOnlyShader{});
+        }
+    }
     std::size_t drawn = 0;
     for (const SceneObject& object : scene.objects) {
         if (!object.mesh) continue;  // an object without a mesh shows nothing
-        drawn += draw_shaded(object, scene.lights, scene.point_lights, to_eye, eye, scene.darkening, [&](const auto& shader) {
-            using Shader = std::remove_cvref_t<decltype(shader)>;
-            const bool per_facet = Shader::kFacetNormal || object.mesh->surface == Surface::faceted;
-            detail::check_drawable(framebuffer, tested, *object.mesh);  // before posing reads its facets
-            detail::Posing posing(*object.mesh, object.model, {.vertex_normals = !per_facet, .facet_normals = per_facet});
-            const Mesh& mesh = posing.mesh();  // sized now, filled by the batches below
-            auto front = front_for(mesh, shader);
-            const std::size_t vertices = mesh.positions.size(), facets = mesh.facets.size();
-            const std::size_t vertex_batch = batch_size(vertices), facet_batch = batch_size(facets);
-            team.for_each(batches(vertices, vertex_batch), [&](int b) {
-                const auto [begin, end] = range(b, vertices, vertex_batch);
-                posing.vertices(begin, end);
-                front.vertices(begin, end);  // reads vertex i's posed data only
-            });
-            std::vector<detail::StripBins<typename Shader::Varying>> bins(static_cast<std::size_t>(batches(facets, facet_batch)),
-                                                                          detail::StripBins<typename Shader::Varying>(layout, samples != nullptr ? kSubpixelOne / 2 : 0));
-            std::vector<std::size_t> counted(bins.size());
-            team.for_each(static_cast<int>(bins.size()), [&](int b) {
-                const auto [begin, end] = range(b, facets, facet_batch);
-                detail::StripBins<typename Shader::Varying>& batch = bins[static_cast<std::size_t>(b)];
-                batch.reserve(end - begin);
-                posing.facets(begin, end);  // facet f reads its own posed corners and normal only
-                counted[static_cast<std::size_t>(b)] = front.facets(begin, end, [&](const auto& corners) { batch.add(corners); });
-                batch.finish();
-            });
-            team.for_each(layout.count(), [&](int s) {
-                const PixelRect strip = layout.strip(s);
-                if (!cleared) clear(strip);
-                for (const auto& batch : bins) {
-                    batch.for_each_in(s, [&](const auto& corners) {
-                        if (samples != nullptr) {
-                            detail::shade_triangle_samples<Shader, kMode>(*samples, depth_test, corners, shader, strip, multisampling.offsets);
-                        } else {
-                            detail::shade_triangle<Shader, detail::FloatDepth, kMode>(framebuffer, tested, corners, shader, {}, strip);
-                        }
-                    });
-                }
-            });
-            cleared = true;
-            return std::accumulate(counted.begin(), counted.end(), std::size_t{0});
-        });
+        drawn += draw_shaded(object, scene.lights, scene.point_lights, to_eye, eye, scene.darkening,
+                             [&](const auto& shader) { return draw_object(object, shader); });
     }
     if (!cleared) {
         team.for_each(layout.count(), [&](int s) { clear(layout.strip(s)); });
@@ -189,23 +206,24 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
     return drawn;
 }
 
-std::size_t draw(Framebuffer& framebuffer, const Scene& scene, DepthBuffer& depth, detail::WorkerTeam& team, Multisampling multisampling = {}) {
+std::size_t draw(Framebuffer& framebuffer, const Scene& scene, DepthBuffer& depth, detail::WorkerTeam& team, RenderOptions::DepthFirst order,
+                 Multisampling multisampling = {}) {
     // Orthographic: attributes are linear on screen, and the direction toward the viewer is the same at every pixel.
     return render_objects<detail::Interpolation::screen_linear>(framebuffer, scene, depth, std::nullopt, team,
                                                                 [&](const Mesh& mesh, const auto& shader) {
                                                                     return detail::OrthoFront(scene.camera, mesh, shader);
                                                                 },
-                                                                multisampling);
+                                                                multisampling, order);
 }
 
 std::size_t draw(Framebuffer& framebuffer, const PerspectiveScene& scene, DepthBuffer& depth, detail::WorkerTeam& team,
-                 Multisampling multisampling = {}) {
+                 RenderOptions::DepthFirst order, Multisampling multisampling = {}) {
     // Phase 2 takes the direction toward the eye at every point.
     return render_objects<detail::Interpolation::perspective>(
         framebuffer, scene, depth, scene.camera.eye(), team, [&](const Mesh& mesh, const auto& shader) {
             return detail::PerspectiveFront(framebuffer, scene.camera, mesh, shader, detail::kGuardBandPixels);
         },
-        multisampling);
+        multisampling, order);
 }
 
 // The most memory a frame's samples may take (colour and depth, 7 bytes a sample); a frame that
@@ -220,7 +238,7 @@ template <typename Camera>
 std::size_t draw_samples(Framebuffer& framebuffer, const BasicScene<Camera>& scene, DepthBuffer& depth, detail::WorkerTeam& team,
                          RenderOptions options, detail::SampleBuffer& buffer, std::vector<std::uint8_t>* alpha) {
     const std::span<const glm::vec2> offsets = sample_offsets(options.samples);
-    if (offsets.size() == 1) return draw(framebuffer, scene, depth, team);
+    if (offsets.size() == 1) return draw(framebuffer, scene, depth, team, options.depth_first);
     const std::size_t pixels = static_cast<std::size_t>(framebuffer.width()) * static_cast<std::size_t>(framebuffer.height());
     if (!options.shade_every_sample && pixels * offsets.size() * 7 <= kMaxSampleBufferBytes) {
         std::array<detail::SampleOffset, detail::kMaxSamples> at{};
@@ -236,7 +254,7 @@ std::size_t draw_samples(Framebuffer& framebuffer, const BasicScene<Camera>& sce
         } else if (alpha != nullptr) {
             alpha->clear();  // an opaque scene has no coverage to give
         }
-        return draw(framebuffer, scene, depth, team, {&buffer, std::span(at.data(), offsets.size()), coverage});
+        return draw(framebuffer, scene, depth, team, options.depth_first, {&buffer, std::span(at.data(), offsets.size()), coverage});
     }
     // Only a caller that takes the alpha gets the surfaces' colour apart from the background.
     const bool with_alpha = alpha != nullptr && scene.keep_depth;
@@ -247,7 +265,7 @@ std::size_t draw_samples(Framebuffer& framebuffer, const BasicScene<Camera>& sce
     std::size_t drawn = 0;
     for (const glm::vec2 offset : offsets) {
         moved.camera = scene.camera.sampled_at(glm::dvec2(offset));
-        drawn = draw(pass, moved, depth, team);
+        drawn = draw(pass, moved, depth, team, options.depth_first);
         if (with_alpha) {
             resolve.add(pass, depth.coverage());
         } else {
@@ -277,7 +295,7 @@ std::size_t render(Framebuffer& framebuffer, const PerspectiveScene& scene, Dept
 Renderer::Renderer(RenderOptions options)
     : team_(std::make_unique<detail::WorkerTeam>(thread_count(options.threads))),
       samples_buffer_(std::make_unique<detail::SampleBuffer>()),
-      options_{options.threads, static_cast<int>(sample_offsets(options.samples).size()), options.shade_every_sample} {}
+      options_{options.threads, static_cast<int>(sample_offsets(options.samples).size()), options.shade_every_sample, options.depth_first} {}
 Renderer::~Renderer() = default;
 Renderer::Renderer(Renderer&&) noexcept = default;
 Renderer& Renderer::operator=(Renderer&&) noexcept = default;
