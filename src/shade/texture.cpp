@@ -1,5 +1,7 @@
 #include <raster/shade/texture.hpp>
 
+#include "shade/texture_wrap.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -9,19 +11,8 @@ namespace raster {
 
 namespace {
 
-// The coordinate brought into [0, 1] the way `wrap` extends the image; NaN and infinities go to 0.
-float wrapped(float coordinate, TextureWrap wrap) noexcept {
-    if (!std::isfinite(coordinate)) return 0.0F;
-    if (wrap == TextureWrap::clamp) return std::clamp(coordinate, 0.0F, 1.0F);
-    const float fraction = coordinate - std::floor(coordinate);
-    return fraction < 1.0F ? fraction : 0.0F;  // a tiny negative value rounds up to exactly 1
-}
-
-// Texel index i of a side of n texels, beyond the edge by at most one, brought back inside.
-int wrapped_index(int i, int n, TextureWrap wrap) noexcept {
-    if (wrap == TextureWrap::clamp) return std::clamp(i, 0, n - 1);
-    return i < 0 ? n - 1 : (i >= n ? 0 : i);
-}
+using detail::wrapped;
+using detail::wrapped_index;
 
 // The next mip level: each texel the mean, in linear light, of the 2 x 2 texels it covers (one
 // row or column where a side is already 1 texel); an odd side's last row or column is left out,

@@ -2,6 +2,7 @@
 #include <raster/shade/textured_shaders.hpp>
 
 #include <array>
+#include <cmath>
 #include <limits>
 #include <optional>
 #include <random>
@@ -94,4 +95,37 @@ TEST(Lanes, EveryLaneOfTexturedPhongEqualsItsPixelStage) {
             for (const SurfacePoint& p : batch) v.push_back(varying(p)), per_pixel.push_back(step(p));
             shader.pixels(v, per_pixel, per_pixel, out);
         });
+}
+
+TEST(Lanes, EveryLaneOfATextureReadEqualsSampleForEveryFilterAndWrap) {
+    Framebuffer image(16, 8);
+    for (int y = 0; y < 8; ++y) {
+        for (int x = 0; x < 16; ++x) image.set_pixel(x, y, {static_cast<std::uint8_t>(16 * x), static_cast<std::uint8_t>(31 * y), static_cast<std::uint8_t>(7 * x * y)});
+    }
+    const Texture texture(image);
+    std::mt19937 random(5);
+    std::uniform_real_distribution<float> coordinate(-2.5F, 2.5F), exponent(-12.0F, 4.0F);
+    const std::array<float, 6> odd{kInf, -kInf, std::numeric_limits<float>::quiet_NaN(), 1.0F, 0.0F, -1e-9F};
+    for (const TextureFilter filter : {TextureFilter::nearest, TextureFilter::bilinear, TextureFilter::trilinear}) {
+        for (const TextureWrap wrap : {TextureWrap::repeat, TextureWrap::clamp}) {
+            for (int batch = 0; batch < 60; ++batch) {
+                LaneUvs at;
+                for (std::size_t i = 0; i < kLanes; ++i) {
+                    // Footprints from far below a texel to far above the whole image, some odd values.
+                    const float step = std::exp2(exponent(random));
+                    at.u[i] = batch % 10 == 0 ? odd[i % odd.size()] : coordinate(random);
+                    at.v[i] = coordinate(random);
+                    at.u_per_x[i] = step, at.v_per_x[i] = step * coordinate(random);
+                    at.u_per_y[i] = batch % 7 == 0 ? odd[(i + 2) % odd.size()] : step * coordinate(random), at.v_per_y[i] = step;
+                }
+                const int count = 1 + batch % kLanes;
+                LaneRgb out;
+                texture.sample_lanes(at, {filter, wrap}, out, count);
+                for (std::size_t i = 0; i < static_cast<std::size_t>(count); ++i) {
+                    const LinearRgb expected = texture.sample({at.u[i], at.v[i]}, {{at.u_per_x[i], at.v_per_x[i]}, {at.u_per_y[i], at.v_per_y[i]}}, {filter, wrap});
+                    EXPECT_EQ((LinearRgb{out.r[i], out.g[i], out.b[i]}), expected) << "batch " << batch << " lane " << i;
+                }
+            }
+        }
+    }
 }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <raster/shade/colour.hpp>
+#include <raster/shade/lanes.hpp>
 #include <raster/rasterize/framebuffer.hpp>
 
 #include <array>
@@ -30,6 +31,13 @@ struct UvFootprint {
     glm::vec2 per_pixel_y{0.0F};
 };
 
+// kLanes texture coordinates and their footprints (UvFootprint), one array per component.
+struct LaneUvs {
+    LaneFloats u{}, v{};
+    LaneFloats u_per_x{}, v_per_x{};
+    LaneFloats u_per_y{}, v_per_y{};
+};
+
 // An image read as a texture; u runs left to right and v bottom to top, as in OBJ and OpenGL,
 // so (0, 0) is the bottom-left corner of the image and texel centres sit at (i + ½) / width.
 class Texture {
@@ -45,11 +53,17 @@ public:
 
     // The colour at (u, v) in linear light; never NaN, whatever u and v are.
     [[nodiscard]] LinearRgb sample(glm::vec2 uv, const UvFootprint& footprint, Sampler sampler) const noexcept;
+    // sample() at `count` points at once: the arithmetic in SIMD lanes, the texel reads lane by
+    // lane, each lane equal to sample() bit for bit.
+    void sample_lanes(const LaneUvs& at, Sampler sampler, LaneRgb& out, int count) const noexcept;
 
 private:
     [[nodiscard]] LinearRgb texel(const Framebuffer& level, int x, int y) const noexcept;
     [[nodiscard]] LinearRgb nearest(const Framebuffer& level, glm::vec2 uv, TextureWrap wrap) const noexcept;
     [[nodiscard]] LinearRgb bilinear(const Framebuffer& level, glm::vec2 uv, TextureWrap wrap) const noexcept;
+    // bilinear() in lanes, lane i reading level(levels[i]).
+    void bilinear_lanes(const std::array<std::size_t, kLanes>& levels, const LaneFloats& u, const LaneFloats& v, TextureWrap wrap,
+                        LaneRgb& out, int count) const noexcept;
 
     std::vector<Framebuffer> levels_;
     std::array<float, 256> linear_from_byte_{};

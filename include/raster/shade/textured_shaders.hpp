@@ -47,6 +47,14 @@ struct DiffuseSource {
     [[nodiscard]] LinearRgb at(glm::vec2 uv, const UvFootprint& footprint) const noexcept {
         return texture == nullptr ? colour : colour * texture->sample(uv, footprint, sampler);
     }
+    // at() for the first `count` lanes of `uvs`.
+    void at_lanes(const LaneUvs& uvs, LaneRgb& out, int count) const noexcept {
+        if (texture != nullptr) texture->sample_lanes(uvs, sampler, out, count);
+        for (std::size_t i = 0; i < static_cast<std::size_t>(count); ++i) {
+            const LinearRgb read = texture == nullptr ? colour : colour * LinearRgb{out.r[i], out.g[i], out.b[i]};
+            put_lane(out, i, read);
+        }
+    }
 };
 
 // No light at all: the diffuse colour as it is, the mode for exact comparisons with other renderers.
@@ -134,13 +142,19 @@ struct BasicTexturedPhongShader {
         const LinearRgb albedo = v.tint.tinted(diffuse.at(v.uv, {per_x.uv, per_y.uv}));
         return srgb_from_linear(lighting->shade(v.position, unit_or_zero(v.normal), albedo));
     }
-    // pixel() at up to kLanes points at once: the texture read lane by lane, the light in SIMD lanes.
+    // pixel() at up to kLanes points at once, in SIMD lanes.
     void pixels(std::span<const Varying> v, std::span<const Varying> per_x, std::span<const Varying> per_y, std::span<Rgb> out) const noexcept {
         LaneVec3 positions, normals;
-        LaneRgb albedo;
+        LaneUvs uvs;
         for (std::size_t i = 0; i < v.size(); ++i) {
             put_lane(positions, i, v[i].position), put_lane(normals, i, v[i].normal);
-            put_lane(albedo, i, v[i].tint.tinted(diffuse.at(v[i].uv, {per_x[i].uv, per_y[i].uv})));
+            uvs.u[i] = v[i].uv.x, uvs.v[i] = v[i].uv.y;
+            uvs.u_per_x[i] = per_x[i].uv.x, uvs.v_per_x[i] = per_x[i].uv.y, uvs.u_per_y[i] = per_y[i].uv.x, uvs.v_per_y[i] = per_y[i].uv.y;
+        }
+        LaneRgb albedo;
+        diffuse.at_lanes(uvs, albedo, static_cast<int>(v.size()));
+        if constexpr (Tinted) {
+            for (std::size_t i = 0; i < v.size(); ++i) put_lane(albedo, i, v[i].tint.tinted({albedo.r[i], albedo.g[i], albedo.b[i]}));
         }
         lighting->shade_lanes(positions, normals, albedo, out.first(v.size()));
     }
