@@ -7,6 +7,7 @@
 #include <optional>
 #include <random>
 #include <span>
+#include <type_traits>
 #include <vector>
 #include <gtest/gtest.h>
 
@@ -128,4 +129,33 @@ TEST(Lanes, EveryLaneOfATextureReadEqualsSampleForEveryFilterAndWrap) {
             }
         }
     }
+}
+
+TEST(Lanes, EveryLaneOfTheOtherTexturedShadersEqualsItsPixelStage) {
+    Framebuffer image(8, 8);
+    for (int y = 0; y < 8; ++y) {
+        for (int x = 0; x < 8; ++x) image.set_pixel(x, y, {static_cast<std::uint8_t>(32 * x), 90, static_cast<std::uint8_t>(32 * y)});
+    }
+    const Texture texture(image);
+    const PhongMaterial material = PhongMaterial::from_srgb({10, 20, 30}, {200, 180, 160}, {40, 40, 40}, 12.0F);
+    const LinearLighting lighting(material, {}, {}, {0, 0, -1});
+    const DiffuseSource source{material.diffuse, &texture, {}};
+    std::mt19937 random(9);
+    std::uniform_real_distribution<float> any(-2.0F, 2.0F);
+    const auto check = [&](const auto& shader, auto make) {
+        using Varying = typename std::remove_cvref_t<decltype(shader)>::Varying;
+        for (int batch = 0; batch < 30; ++batch) {
+            std::vector<Varying> v, per_x, per_y;
+            const std::size_t count = 1 + static_cast<std::size_t>(batch) % kLanes;
+            for (std::size_t i = 0; i < count; ++i) v.push_back(make()), per_x.push_back(make()), per_y.push_back(make());
+            std::array<Rgb, kLanes> out{};
+            shader.pixels(v, per_x, per_y, std::span(out).first(count));
+            for (std::size_t i = 0; i < count; ++i) EXPECT_EQ(out[i], shader.pixel(v[i], per_x[i], per_y[i])) << "batch " << batch << " lane " << i;
+        }
+    };
+    check(UnlitShader{source}, [&] { return UnlitShader::Varying{{any(random), any(random)}, {}}; });
+    check(TintedUnlitShader{source}, [&] { return TintedUnlitShader::Varying{{any(random), any(random)}, Tint<true>({any(random), any(random), 0.5F})}; });
+    check(TexturedFlatShader{&lighting, source}, [&] {
+        return TexturedFlatShader::Varying{any(random), {any(random), 0.1F, 0.2F}, {any(random), any(random)}, {}};
+    });
 }
