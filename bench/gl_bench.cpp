@@ -27,6 +27,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <numbers>
 #include <string>
@@ -207,6 +208,7 @@ int main(int argc, char** argv) {
     std::string side = "raster", name = "torus-1";
     int width = 800, height = 600, frames = 360, threads = 1, samples = 1;
     bool agreement = false, explain = false;
+    raster::RenderOptions::DepthFirst depth_first = raster::RenderOptions::DepthFirst::automatic;
     std::string picture;
     app.add_option("--side", side, "raster or gl")->check(CLI::IsMember({"raster", "gl"}));
     app.add_option("--case", name, "torus-D (torus(24 D, 16 D)), cube, ptah or flythrough (the seed scenes), point-lights (the diary's)");
@@ -216,6 +218,11 @@ int main(int argc, char** argv) {
     app.add_option("--threads", threads, "raster's threads (GL's come from LP_NUM_THREADS)")->check(CLI::Range(0, 256));
     app.add_option("--samples", samples, "Samples per pixel on both sides: raster's multisampling, GL's multisample framebuffer")
         ->check(CLI::IsMember({1, 2, 4, 8, 16}));
+    app.add_option("--depth-first", depth_first, "raster's depth pass: auto (where it pays), always or never")
+        ->transform(CLI::CheckedTransformer(std::map<std::string, raster::RenderOptions::DepthFirst>{
+            {"auto", raster::RenderOptions::DepthFirst::automatic},
+            {"always", raster::RenderOptions::DepthFirst::always},
+            {"never", raster::RenderOptions::DepthFirst::never}}));
     app.add_flag("--agreement", agreement, "Also draw every 30th frame unlit on both sides and report the share of covered pixels that agree");
     app.add_flag("--explain", explain, "With --agreement: sort the pixels where the two differ by how near GL's facet's edge they lie");
     app.add_option("--picture", picture, "Also write the first frame from both sides to PREFIX-raster.webp and PREFIX-gl.webp")
@@ -228,7 +235,7 @@ int main(int argc, char** argv) {
         const auto shared = std::make_shared<const raster::Mesh>(mesh);
         raster::Framebuffer image(width, height);
         raster::DepthBuffer depth;  // for the agreement check's direct draws
-        raster::Renderer renderer({.threads = threads, .samples = samples});  // its threads start once, as llvmpipe's do
+        raster::Renderer renderer({.threads = threads, .samples = samples, .depth_first = depth_first});  // its threads start once, as llvmpipe's do
         const std::optional<raster::SeedScene> seed =
             name == "ptah" || name == "flythrough" ? std::optional<raster::SeedScene>(std::in_place, name) : std::nullopt;
         const std::optional<raster::DiaryScene> diary = name == "point-lights" ? std::optional<raster::DiaryScene>(std::in_place, name) : std::nullopt;
