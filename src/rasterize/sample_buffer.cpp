@@ -10,8 +10,8 @@
 
 namespace raster::detail {
 
-void SampleBuffer::resize(int width, int height, int samples) {
-    width_ = width, height_ = height, samples_ = samples;
+void SampleBuffer::resize(int width, int height, int samples, Rgb background) {
+    width_ = width, height_ = height, samples_ = samples, background_ = background;
     const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
     const std::size_t count = pixels * static_cast<std::size_t>(samples);
     colours_.resize(count * 3);
@@ -19,10 +19,9 @@ void SampleBuffer::resize(int width, int height, int samples) {
     touched_.resize(pixels);
 }
 
-void SampleBuffer::clear_rows(int y_begin, int y_end, Rgb background) noexcept {
+void SampleBuffer::clear_rows(int y_begin, int y_end) noexcept {
     y_begin = std::max(y_begin, 0), y_end = std::min(y_end, height_);
     if (y_begin >= y_end) return;
-    background_ = background;
     const auto row = [&](int y) { return touched_.begin() + static_cast<std::ptrdiff_t>(y) * width_; };
     std::fill(row(y_begin), row(y_end), std::uint8_t{0});
 }

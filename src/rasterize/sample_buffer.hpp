@@ -15,14 +15,15 @@ namespace raster::detail {
 class SampleBuffer {
 public:
     // Keeps its memory when the size does not grow; the contents are undefined until cleared.
-    void resize(int width, int height, int samples);
+    // `background` is what every sample shows until a triangle reaches its pixel: set here, once
+    // a frame, before any thread clears or draws.
+    void resize(int width, int height, int samples, Rgb background);
     [[nodiscard]] int width() const noexcept { return width_; }
     [[nodiscard]] int height() const noexcept { return height_; }
     [[nodiscard]] int samples() const noexcept { return samples_; }
 
-    // Rows [y_begin, y_end): every sample the background, at infinite depth. The background is
-    // the same for every row of a frame.
-    void clear_rows(int y_begin, int y_end, Rgb background) noexcept;
+    // Rows [y_begin, y_end): every sample the background, at infinite depth.
+    void clear_rows(int y_begin, int y_end) noexcept;
     // The samples of pixel (x, y): samples() colours of three bytes, and samples() depths, which
     // `touch` fills (with the clear's values) when the pixel is first drawn after a clear.
     void touch(int x, int y) noexcept {

@@ -30,6 +30,7 @@ public:
     // For a triangle of non-zero area; at most kMaxSamples offsets are used.
     SampleCoverage(const std::array<SubpixelPoint, 3>& points, std::span<const SampleOffset> offsets) noexcept
         : count_(static_cast<int>(std::min<std::size_t>(offsets.size(), kMaxSamples))) {
+        if (count_ == 0) return;  // no samples: nothing covered (usable_ stays 0)
         const bool clockwise = twice_signed_area(points) < 0;  // walked the other way, as the fill does
         for (std::size_t k = 0; k < 3; ++k) {
             const SubpixelPoint a = points[k], b = points[(k + 1) % 3];

@@ -131,7 +131,7 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
     };
     bool cleared = false;
     const auto clear = [&](const PixelRect& strip) {
-        if (samples != nullptr) return samples->clear_rows(strip.y, strip.y + strip.height, scene.background);
+        if (samples != nullptr) return samples->clear_rows(strip.y, strip.y + strip.height);
         framebuffer.clear_rows(strip.y, strip.y + strip.height, scene.background);
         if (tested != nullptr) tested->clear_rows(strip.y, strip.y + strip.height);
     };
@@ -181,9 +181,9 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
                                            (order == RenderOptions::DepthFirst::automatic &&
                                             detail::depth_first(scene, depth_test, framebuffer.width(), framebuffer.height())));
     if (depth_pass) {
-        // Every object's depth first, then the shading pass colours only the samples at the
-        // nearest depth: the same picture (the last facet at that depth wins, as it would), with
-        // each pixel shaded once however many surfaces cover it.
+        // Every object's depth first, then the shading pass colours only the fragments at the
+        // nearest depth: the same picture (the last facet at that depth wins, as it would),
+        // without shading the surfaces hidden behind it.
         for (const SceneObject& object : scene.objects) {
             if (object.mesh) draw_object(object, detail::DepthOnlyShader{});
         }
@@ -246,7 +246,7 @@ std::size_t draw_samples(Framebuffer& framebuffer, const BasicScene<Camera>& sce
             const glm::dvec2 o(offsets[s]);
             at[s] = {static_cast<std::int32_t>(std::lround(o.x * kSubpixelOne)), static_cast<std::int32_t>(std::lround(o.y * kSubpixelOne)), o.x, o.y};
         }
-        buffer.resize(framebuffer.width(), framebuffer.height(), static_cast<int>(offsets.size()));
+        buffer.resize(framebuffer.width(), framebuffer.height(), static_cast<int>(offsets.size()), scene.background);
         std::uint8_t* coverage = nullptr;
         if (alpha != nullptr && scene.keep_depth) {
             alpha->assign(pixels, 0);

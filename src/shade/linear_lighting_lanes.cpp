@@ -18,20 +18,6 @@ using lanes::Mask;
 using lanes::Vec3;
 namespace stdx = lanes::stdx;
 
-// SpecularPower per lane: repeated squaring for a whole exponent, std::pow otherwise.
-Floats powered(const SpecularPower& power, Floats cosine) noexcept {
-    if (const std::optional<unsigned> whole = power.whole()) {
-        Floats result(1.0F);
-        for (unsigned n = *whole; n != 0; n >>= 1U, cosine *= cosine) {
-            if ((n & 1U) != 0) result *= cosine;
-        }
-        return result;
-    }
-    Floats result;
-    for (std::size_t i = 0; i < Floats::size(); ++i) result[i] = power(cosine[i]);
-    return result;
-}
-
 // DepthDarkening::factor per lane.
 Floats darkened(const DepthDarkening& d, const Floats& depth) noexcept {
     Floats out = 1.0F - (1.0F - d.floor) * (depth - d.start) / (d.end - d.start);
@@ -73,7 +59,7 @@ Floats darkened(const DepthDarkening& d, const Floats& depth) noexcept {
         diffuse += light.intensity * lanes::positive_part(lanes::dot(normal, toward_light));
         if (power_.enabled()) {
             const Vec3 half = eye_ ? lanes::unit_or_zero(toward_light + to_eye) : lanes::broadcast(light.half.x, light.half.y, light.half.z);
-            specular += light.intensity * powered(power_, lanes::positive_part(lanes::dot(normal, half)));
+            specular += light.intensity * lanes::powered(power_, lanes::positive_part(lanes::dot(normal, half)));
         }
     }
     for (const PreparedPointLight& light : points_) {
@@ -86,7 +72,7 @@ Floats darkened(const DepthDarkening& d, const Floats& depth) noexcept {
         for (std::size_t i = 0; i < Floats::size(); ++i) arriving[i] = attenuated(light, distance[i]);
         stdx::where(lit, diffuse) += arriving * lanes::positive_part(lanes::dot(normal, unit));
         if (power_.enabled()) {
-            stdx::where(lit, specular) += arriving * powered(power_, lanes::positive_part(lanes::dot(normal, lanes::unit_or_zero(unit + to_eye))));
+            stdx::where(lit, specular) += arriving * lanes::powered(power_, lanes::positive_part(lanes::dot(normal, lanes::unit_or_zero(unit + to_eye))));
         }
     }
     if (darkening_ && eye_) {

@@ -1,8 +1,11 @@
 #pragma once
 
 #include <raster/shade/lanes.hpp>
+#include <raster/shade/lighting.hpp>
 
 #include <experimental/simd>
+#include <limits>
+#include <optional>
 
 // The SIMD side of lanes (raster/shade/lanes.hpp), GCC's <experimental/simd> at the baseline of
 // the build (SSE2 on any x86-64): every function does per lane what its scalar namesake does.
@@ -44,6 +47,20 @@ struct Vec3 {
     stdx::where(!usable, out.y) = 0.0F;
     stdx::where(!usable, out.z) = 0.0F;
     return out;
+}
+
+// SpecularPower per lane: repeated squaring for a whole exponent, std::pow otherwise.
+[[nodiscard]] inline Floats powered(const SpecularPower& power, Floats cosine) noexcept {
+    if (const std::optional<unsigned> whole = power.whole()) {
+        Floats result(1.0F);
+        for (unsigned n = *whole; n != 0; n >>= 1U, cosine *= cosine) {
+            if ((n & 1U) != 0) result *= cosine;
+        }
+        return result;
+    }
+    Floats result;
+    for (std::size_t i = 0; i < Floats::size(); ++i) result[i] = power(cosine[i]);
+    return result;
 }
 
 }  // namespace raster::lanes

@@ -15,14 +15,21 @@ namespace {
 
 constexpr int kWidth = 160, kHeight = 120;
 
+// One sample, multisampled, supersampled and on three threads; the picture and, for a scene that
+// keeps depth, the coverage a Renderer hands out as alpha.
 template <typename Scene>
 void expect_same_either_way(const Scene& scene, const std::string& name) {
-    for (const int samples : {1, 4}) {
+    const RenderOptions ways[] = {{.samples = 1}, {.samples = 4}, {.samples = 2, .shade_every_sample = true}, {.threads = 3, .samples = 4}};
+    for (RenderOptions options : ways) {
         Framebuffer one_pass(kWidth, kHeight), depth_first(kWidth, kHeight);
-        raster::DepthBuffer depth;
-        raster::render(one_pass, scene, depth, {.samples = samples, .depth_first = RenderOptions::DepthFirst::never});
-        raster::render(depth_first, scene, depth, {.samples = samples, .depth_first = RenderOptions::DepthFirst::always});
-        EXPECT_EQ(one_pass, depth_first) << name << " at " << samples << " samples";
+        options.depth_first = RenderOptions::DepthFirst::never;
+        raster::Renderer plain(options);
+        plain.render(one_pass, scene);
+        options.depth_first = RenderOptions::DepthFirst::always;
+        raster::Renderer first(options);
+        first.render(depth_first, scene);
+        EXPECT_EQ(one_pass, depth_first) << name << " at " << options.samples << " samples, threads " << options.threads;
+        EXPECT_EQ(plain.coverage(), first.coverage()) << name << " at " << options.samples << " samples";
     }
 }
 
@@ -33,6 +40,9 @@ TEST(DepthFirst, EveryDiaryAndSeedSceneLooksTheSameDrawnDepthFirst) {
         const raster::DiaryScene scene(info.name);
         expect_same_either_way(scene.still(kWidth, kHeight), std::string(info.name));
         expect_same_either_way(scene.frame(kWidth, kHeight, info.frames / 3, info.frames), std::string(info.name) + " frame");
+        raster::Scene transparent = scene.still(kWidth, kHeight);
+        transparent.keep_depth = true;  // the coverage becomes the alpha of a transparent picture
+        expect_same_either_way(transparent, std::string(info.name) + " kept depth");
     }
     for (const raster::SeedSceneInfo& info : raster::seed_scenes()) {
         const raster::SeedScene scene(info.name);

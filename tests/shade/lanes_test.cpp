@@ -159,3 +159,19 @@ TEST(Lanes, EveryLaneOfTheOtherTexturedShadersEqualsItsPixelStage) {
         return TexturedFlatShader::Varying{any(random), {any(random), 0.1F, 0.2F}, {any(random), any(random)}, {}};
     });
 }
+
+TEST(Lanes, EveryLaneOfTheDiarysPhongEqualsItsPixelStage) {
+    const std::vector<DirectionalLight> suns{{{1, 1, -1}, 0.7F}, {{-1, 0.2F, 0}, 0.3F}, {{0, 0, 0}, 1.0F}};
+    const std::vector<SurfacePoint> points = awkward_points(Lights{}.lamps);
+    for (const std::optional<float> shininess : {std::optional<float>{}, std::optional<float>{30.0F}, std::optional<float>{2.5F}}) {
+        const Lighting lighting({{52, 110, 210}, 0.2F, 0.8F, shininess}, suns, {0, 0, -1});
+        const PhongShader shader{&lighting};
+        expect_lanes_match(
+            points, [&](const SurfacePoint& p) { return shader.pixel(p.normal); },
+            [&](std::span<const SurfacePoint> batch, std::span<Rgb> out) {
+                std::vector<glm::vec3> normals;
+                for (const SurfacePoint& p : batch) normals.push_back(p.normal);
+                shader.pixels(normals, out);
+            });
+    }
+}

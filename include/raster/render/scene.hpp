@@ -80,7 +80,7 @@ struct RenderOptions {
     // drawn once per sample position, shading included (supersampling).
     bool shade_every_sample = false;
     // Whether every object's depth is drawn before any colour, so that the shading pass colours
-    // each pixel once however many surfaces cover it. The picture is the same either way
+    // only the fragments at the nearest depth, not the surfaces hidden behind. The picture is the same either way
     // (doc/conventions.md#depth); automatic takes it for scenes of overlapping objects lit or
     // textured per pixel, where the bench found it pays.
     enum class DepthFirst { automatic, always, never };

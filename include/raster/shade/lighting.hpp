@@ -1,6 +1,7 @@
 #pragma once
 
 #include <raster/rasterize/framebuffer.hpp>
+#include <raster/shade/lanes.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -93,6 +94,8 @@ struct Lighting {
         }
         return material.ambient + material.diffuse * lit;
     }
+    // intensity(unit_or_zero(normal)) at `count` normals at once, in SIMD lanes, each lane equal to it bit for bit.
+    void intensity_lanes(const LaneVec3& normals, LaneFloats& out, int count) const noexcept;
 
 private:
     SpecularPower specular_;

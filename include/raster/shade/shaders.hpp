@@ -52,6 +52,14 @@ struct PhongShader {
     [[nodiscard]] Rgb pixel(const Varying& normal) const noexcept {
         return scaled_colour(lighting->material.base, lighting->intensity(unit_or_zero(normal)));
     }
+    // pixel() at up to kLanes normals at once, lit in SIMD lanes.
+    void pixels(std::span<const Varying> normals, std::span<Rgb> out) const noexcept {
+        LaneVec3 lanes;
+        for (std::size_t i = 0; i < normals.size(); ++i) put_lane(lanes, i, normals[i]);
+        LaneFloats intensity{};
+        lighting->intensity_lanes(lanes, intensity, static_cast<int>(normals.size()));
+        for (std::size_t i = 0; i < normals.size(); ++i) out[i] = scaled_colour(lighting->material.base, intensity[i]);
+    }
 };
 
 // The same three in linear light (Phase 2): colours summed in linear light and encoded to sRGB
