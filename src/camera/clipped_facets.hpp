@@ -119,10 +119,13 @@ std::size_t draw_facets_in_perspective(Framebuffer& colour, DepthBuffer* depth_b
                                        const Mesh& mesh, const Shader& shader, double band = kGuardBandPixels,
                                        std::optional<PixelRect> rows = std::nullopt) {
     const PixelRect target = rows.value_or(PixelRect{0, 0, colour.width(), colour.height()});
-    return facing_triangles_in_perspective(colour, depth_buffer, camera, mesh, shader, band, [&](const auto& corners) {
+    LaneBatch<Shader> lanes(shader);
+    const std::size_t drawn = facing_triangles_in_perspective(colour, depth_buffer, camera, mesh, shader, band, [&](const auto& corners) {
         if (misses_rows({corners[0].at, corners[1].at, corners[2].at}, target)) return;  // another band's
-        shade_triangle<Shader, FloatDepth, kMode>(colour, depth_buffer, corners, shader, {}, target);
+        shade_triangle<Shader, FloatDepth, kMode>(colour, depth_buffer, corners, shader, {}, target, &lanes);
     });
+    lanes.flush();
+    return drawn;
 }
 
 }  // namespace raster::detail

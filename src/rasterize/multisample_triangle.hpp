@@ -19,9 +19,11 @@ namespace raster::detail {
 
 // Draws one triangle facing the camera into rows `rows` of `target`; depth is tested per sample
 // when `depth_test`, and written per sample always (a transparent frame reads coverage from it).
+// The pixels go through `batch` when given (the caller flushes it), else through one of its own.
 template <typename Shader, Interpolation kMode>
 void shade_triangle_samples(SampleBuffer& target, bool depth_test, const std::array<ShadedCorner<typename Shader::Varying>, 3>& corners,
-                            const Shader& shader, PixelRect rows, std::span<const SampleOffset> offsets) {
+                            const Shader& shader, PixelRect rows, std::span<const SampleOffset> offsets,
+                            LaneBatch<Shader>* batch = nullptr) {
     using Varying = typename Shader::Varying;
     const std::array<SubpixelPoint, 3> points{corners[0].at, corners[1].at, corners[2].at};
     const std::int64_t twice_area = twice_signed_area(points);
@@ -64,7 +66,8 @@ void shade_triangle_samples(SampleBuffer& target, bool depth_test, const std::ar
             }
         }
     };
-    LaneBatch<Shader> lanes(shader);  // used by shaders that colour pixels in lanes
+    LaneBatch<Shader> own(shader);
+    LaneBatch<Shader>& lanes = batch != nullptr ? *batch : own;
 
     const SampleCoverage coverage(points, offsets);
     const int count = static_cast<int>(std::min<std::size_t>(offsets.size(), kMaxSamples));
@@ -96,22 +99,14 @@ void shade_triangle_samples(SampleBuffer& target, bool depth_test, const std::ar
             // Shaded once: at the centre when every sample is inside, else at the covered samples'
             // centroid, which lies inside the triangle, so nothing is read from beyond its edges.
             std::uint8_t* out = target.colours(x, y);
-            Rgb c = constant_colour;
-            if (!constant) {
-                const PixelVarying<Varying> at = covered == all ? varying_at(a, b) : varying_at(sum_a / inside, sum_b / inside);
-                if constexpr (LaneShader<Shader>) {
-                    lanes.add(out, passed, at);
-                    continue;
-                }
-                c = colour_of(shader, at);
+            if (constant) {
+                write_samples(out, passed, constant_colour);
+                continue;
             }
-            for (int s = 0; s < count; ++s) {
-                if ((passed & (std::uint32_t{1} << s)) == 0) continue;
-                out[s * 3] = c.r, out[s * 3 + 1] = c.g, out[s * 3 + 2] = c.b;
-            }
+            lanes.add(out, passed, covered == all ? varying_at(a, b) : varying_at(sum_a / inside, sum_b / inside));
         }
     });
-    lanes.flush();
+    if (batch == nullptr) lanes.flush();
 }
 
 }  // namespace raster::detail

@@ -91,23 +91,6 @@ PixelVarying<Varying> perspective_varying(const Varying& base, const Varying& al
     return at;
 }
 
-// The shader's colour at a pixel whose Varying is `at`.
-template <typename Shader, typename Varying = typename Shader::Varying>
-Rgb colour_of(const Shader& shader, const PixelVarying<Varying>& at) {
-    if constexpr (NeedsFootprint<Shader>) {
-        return shader.pixel(at.value, at.per_x, at.per_y);
-    } else {
-        return shader.pixel(at.value);
-    }
-}
-
-// The shader's colour at a point of a perspective triangle, as perspective_varying finds it.
-template <typename Shader, typename Varying = typename Shader::Varying>
-Rgb perspective_colour(const Shader& shader, const Varying& base, const Varying& along1, const Varying& along2,
-                       const PerspectiveWeights& p, double q1, double q2, double sum, double w) {
-    return colour_of(shader, perspective_varying<Shader>(base, along1, along2, p, q1, q2, sum, w));
-}
-
 // How attributes vary across the screen: linearly for an orthographic view; through 1/w for a
 // perspective one, where each corner's depth is its view depth w > 0.
 enum class Interpolation { screen_linear, perspective };
@@ -115,10 +98,11 @@ enum class Interpolation { screen_linear, perspective };
 // Fills one triangle facing the camera. Varying needs +, - and * float; corner 0 anchors the
 // interpolation (v0 + w1 (v1 - v0) + w2 (v2 - v0)), so equal corners give that value exactly.
 // `rows`, when given, limits the writes to a band of rows: one strip of a render in strips.
+// The pixels go through `batch` when given (the caller flushes it), else through one of its own.
 template <typename Shader, typename DepthFormat = FloatDepth, Interpolation kMode = Interpolation::screen_linear>
 void shade_triangle(Framebuffer& colour, DepthBuffer* depth,
                     const std::array<ShadedCorner<typename Shader::Varying>, 3>& corners, const Shader& shader,
-                    DepthFormat stored = {}, std::optional<PixelRect> rows = std::nullopt) {
+                    DepthFormat stored = {}, std::optional<PixelRect> rows = std::nullopt, LaneBatch<Shader>* batch = nullptr) {
     using Varying = typename Shader::Varying;
     const std::array<SubpixelPoint, 3> points{corners[0].at, corners[1].at, corners[2].at};
     const std::int64_t twice_area = twice_signed_area(points);
@@ -146,7 +130,8 @@ void shade_triangle(Framebuffer& colour, DepthBuffer* depth,
         if (constant) constant_colour = shader.pixel(base);
     }
 
-    LaneBatch<Shader> lanes(shader);  // used by shaders that colour pixels in lanes
+    LaneBatch<Shader> own(shader);
+    LaneBatch<Shader>& lanes = batch != nullptr ? *batch : own;
 
     if constexpr (kMode == Interpolation::perspective) {
         // Screen weights a, b of corners 1 and 2 become b_k / w_k over their sum: the weights
@@ -169,18 +154,10 @@ void shade_triangle(Framebuffer& colour, DepthBuffer* depth,
                     out[0] = constant_colour.r, out[1] = constant_colour.g, out[2] = constant_colour.b;
                     continue;
                 }
-                const PixelVarying<Varying> at = perspective_varying<Shader>(base, along1, along2, {w1, w2, inv0, inv1, inv2}, q1, q2, sum, w);
-                if constexpr (LaneShader<Shader>) {
-                    lanes.add(out, 1, at);
-                } else {
-                    const Rgb c = colour_of(shader, at);
-                    out[0] = c.r;
-                    out[1] = c.g;
-                    out[2] = c.b;
-                }
+                lanes.add(out, 1, perspective_varying<Shader>(base, along1, along2, {w1, w2, inv0, inv1, inv2}, q1, q2, sum, w));
             }
         });
-        lanes.flush();
+        if (batch == nullptr) lanes.flush();
         return;
     }
     rasterize_convex(points, clip, [&](Span span) {
@@ -197,24 +174,14 @@ void shade_triangle(Framebuffer& colour, DepthBuffer* depth,
                 nearest[k] = z;
             }
             if constexpr (DepthOnly<Shader>) continue;
-            if constexpr (LaneShader<Shader>) {
-                if (!constant) {
-                    lanes.add(out, 1, {varying, step, step_y});  // the steps are constant across the triangle
-                    continue;
-                }
+            if (constant) {
+                out[0] = constant_colour.r, out[1] = constant_colour.g, out[2] = constant_colour.b;
+                continue;
             }
-            Rgb c = constant_colour;
-            if constexpr (NeedsFootprint<Shader>) {
-                c = shader.pixel(varying, step, step_y);
-            } else {
-                if (!constant) c = shader.pixel(varying);
-            }
-            out[0] = c.r;
-            out[1] = c.g;
-            out[2] = c.b;
+            lanes.add(out, 1, {varying, step, step_y});  // the steps are constant across the triangle
         }
     });
-    lanes.flush();
+    if (batch == nullptr) lanes.flush();
 }
 
 // Throws std::invalid_argument for a depth buffer of another size or a mesh whose facets or
@@ -362,10 +329,13 @@ template <typename Shader, typename DepthFormat = FloatDepth>
 std::size_t draw_facets(Framebuffer& colour, DepthBuffer* depth_buffer, const OrthoCamera& camera, const Mesh& mesh,
                         const Shader& shader, DepthFormat stored = {}, std::optional<PixelRect> rows = std::nullopt) {
     const PixelRect target = rows.value_or(PixelRect{0, 0, colour.width(), colour.height()});
-    return facing_triangles(colour, depth_buffer, camera, mesh, shader, [&](const auto& corners) {
+    LaneBatch<Shader> lanes(shader);
+    const std::size_t drawn = facing_triangles(colour, depth_buffer, camera, mesh, shader, [&](const auto& corners) {
         if (misses_rows({corners[0].at, corners[1].at, corners[2].at}, target)) return;  // another band's
-        shade_triangle(colour, depth_buffer, corners, shader, stored, target);
+        shade_triangle(colour, depth_buffer, corners, shader, stored, target, &lanes);
     });
+    lanes.flush();
+    return drawn;
 }
 
 }  // namespace raster::detail

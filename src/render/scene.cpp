@@ -164,15 +164,17 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
         team.for_each(layout.count(), [&](int s) {
             const PixelRect strip = layout.strip(s);
             if (!cleared) clear(strip);
+            detail::LaneBatch<Shader> lanes(shader);  // open across the strip's triangles: full batches on small ones
             for (const auto& batch : bins) {
                 batch.for_each_in(s, [&](const auto& corners) {
                     if (samples != nullptr) {
-                        detail::shade_triangle_samples<Shader, kMode>(*samples, depth_test, corners, shader, strip, multisampling.offsets);
+                        detail::shade_triangle_samples<Shader, kMode>(*samples, depth_test, corners, shader, strip, multisampling.offsets, &lanes);
                     } else {
-                        detail::shade_triangle<Shader, detail::FloatDepth, kMode>(framebuffer, tested, corners, shader, {}, strip);
+                        detail::shade_triangle<Shader, detail::FloatDepth, kMode>(framebuffer, tested, corners, shader, {}, strip, &lanes);
                     }
                 });
             }
+            lanes.flush();
         });
         cleared = true;
         return std::accumulate(counted.begin(), counted.end(), std::size_t{0});

@@ -1,4 +1,5 @@
 #include <raster/shade/colour.hpp>
+#include <raster/shade/lanes.hpp>
 
 #include <array>
 #include <cmath>
@@ -78,6 +79,13 @@ std::uint8_t srgb_byte_from_linear(float linear) noexcept { return encode(linear
 Rgb srgb_from_linear(LinearRgb colour) noexcept {
     const Thresholds& table = thresholds();
     return {encode(colour.r, table), encode(colour.g, table), encode(colour.b, table)};
+}
+
+void srgb_from_linear(const LaneRgb& colours, std::span<Rgb> out) noexcept {
+    const Thresholds& table = thresholds();
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        out[i] = {encode(colours.r[i], table), encode(colours.g[i], table), encode(colours.b[i], table)};
+    }
 }
 
 }  // namespace raster

@@ -25,4 +25,23 @@ namespace raster {
     for (int i = 0; i < count; ++i) out[static_cast<std::size_t>(i)] = all[static_cast<std::size_t>(i)];
 }
 
+void scaled_colours(Rgb base, const LaneFloats& intensity, std::span<Rgb> out) noexcept {
+    using lanes::Floats;
+    namespace stdx = lanes::stdx;
+    using Ints = stdx::fixed_size_simd<int, kLanes>;
+    const Floats scale = lanes::load(intensity);
+    const auto channel = [&scale](std::uint8_t c) {
+        Floats v = static_cast<float>(c) * scale;
+        stdx::where(!(v > 0.0F), v) = 0.0F;  // negative or NaN
+        stdx::where(v >= 255.0F, v) = 255.0F;
+        Floats whole = stdx::static_simd_cast<Floats>(stdx::static_simd_cast<Ints>(v));  // truncation is floor here
+        stdx::where(v - whole >= 0.5F, whole) += 1.0F;
+        return whole;
+    };
+    const Floats r = channel(base.r), g = channel(base.g), b = channel(base.b);
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        out[i] = {static_cast<std::uint8_t>(r[i]), static_cast<std::uint8_t>(g[i]), static_cast<std::uint8_t>(b[i])};
+    }
+}
+
 }  // namespace raster

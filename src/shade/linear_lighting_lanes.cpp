@@ -91,10 +91,7 @@ Floats darkened(const DepthDarkening& d, const Floats& depth) noexcept {
     const Floats b = m.emissive.b + lanes::load(diffuse_colours.b) * diffuse + m.specular.b * specular;
     LaneRgb linear;
     lanes::store(r, linear.r), lanes::store(g, linear.g), lanes::store(b, linear.b);
-    for (int i = 0; i < count; ++i) {
-        const auto k = static_cast<std::size_t>(i);
-        out[k] = srgb_from_linear({linear.r[k], linear.g[k], linear.b[k]});
-    }
+    srgb_from_linear(linear, out.first(static_cast<std::size_t>(count)));
 }
 
 }  // namespace raster

@@ -4,6 +4,9 @@
 #include "support/picture.hpp"
 
 #include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
 #include <glm/vec3.hpp>
 #include <gtest/gtest.h>
 
@@ -128,4 +131,34 @@ TEST(ShadedTriangle, OnEqualDepthTheLaterFacetWins) {
     raster::detail::shade_triangle(image, &depth, corners(at(0, 0), at(4, 0), at(0, 3), 1, 1, 1), PaintShader{first});
     raster::detail::shade_triangle(image, &depth, corners(at(0, 0), at(4, 0), at(0, 3), 1, 1, 1), PaintShader{second});
     EXPECT_TRUE(looks_like(image, {"SSSS", "SSS.", "SS.."}, {{'F', first}, {'S', second}}));
+}
+
+// A batch left open across triangles (as a strip keeps it) still writes them in drawing order:
+// the later triangle's pixels land over the earlier one's, and a farther one's not at all.
+TEST(ShadedTriangle, ABatchOpenAcrossTrianglesWritesInDrawingOrder) {
+    struct TwoTone {
+        using Varying = float;
+        [[nodiscard]] raster::Rgb pixel(float value) const noexcept { return value < 100 ? raster::Rgb{0, 0, 255} : raster::Rgb{255, 0, 0}; }
+    };
+    const auto varied = [](std::array<ShadedCorner<float>, 3> c, float value) {  // unequal corners: no flat shortcut
+        for (int k = 0; k < 3; ++k) c[static_cast<std::size_t>(k)].varying = value + static_cast<float>(k);
+        return c;
+    };
+    for (const bool depth_test : {false, true}) {
+        Framebuffer image(10, 5);
+        raster::DepthBuffer depth;
+        depth.prepare(10, 5);
+        raster::DepthBuffer* const tested = depth_test ? &depth : nullptr;
+        const TwoTone shader;
+        raster::detail::LaneBatch<TwoTone> lanes(shader);
+        raster::detail::shade_triangle(image, tested, varied(corners(at(0, 0), at(6, 0), at(0, 4), 1, 1, 1), 1), shader, {}, std::nullopt, &lanes);
+        raster::detail::shade_triangle(image, tested, varied(corners(at(3, 0), at(9, 0), at(9, 4), 2, 2, 2), 101), shader, {}, std::nullopt, &lanes);
+        raster::detail::shade_triangle(image, tested, varied(corners(at(5, 0), at(9, 0), at(5, 4), 3, 3, 3), 1), shader, {}, std::nullopt, &lanes);
+        lanes.flush();
+        // Without depth the third (blue, farthest) paints over the red; with it, it shows only
+        // where nothing was drawn before it (column 5 of rows 2 and 3).
+        const std::vector<std::string> expected = depth_test ? std::vector<std::string>{"BBBBBBRRR.", "BBBBBRRRR.", "BBB..BRRR.", "BB...B..R.", ".........."}
+                                                             : std::vector<std::string>{"BBBRRBBBB.", "BBBBBBBBR.", "BBB..BBRR.", "BB...B..R.", ".........."};
+        EXPECT_TRUE(looks_like(image, expected, {{'B', {0, 0, 255}}, {'R', {255, 0, 0}}})) << (depth_test ? "depth test" : "painter's order");
+    }
 }

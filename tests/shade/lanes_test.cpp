@@ -175,3 +175,32 @@ TEST(Lanes, EveryLaneOfTheDiarysPhongEqualsItsPixelStage) {
             });
     }
 }
+
+// The untextured per-vertex shaders: a scale of the base colour (Phase 1) or an sRGB encode
+// (Phase 2), on values at the rounding and clamping edges.
+TEST(Lanes, EveryLaneOfFlatAndGouraudEqualsItsPixelStageInBothPhases) {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    std::vector<float> values{0.0F, -0.0F, -1.0F, nan, kInf, -kInf, 1.0F, 2.0F, 0.5F / 255.0F, 1.5F / 255.0F, 254.5F / 255.0F,
+                              std::nextafter(0.5F / 37.0F, 0.0F), 0.5F / 37.0F, 0.0031308F, 1e-30F, 0.9999999F};
+    std::mt19937 random(29);
+    std::uniform_real_distribution<float> any(-0.2F, 1.2F);
+    for (int i = 0; i < 300; ++i) values.push_back(any(random));
+    const std::vector<DirectionalLight> sun{{{0, 0, -1}, 1.0F}};
+    const Lighting lighting({{37, 110, 255}, 0.2F, 0.8F, std::nullopt}, sun, {0, 0, -1});
+    const GouraudShader gouraud{&lighting};
+    const LinearLighting linear_lighting(PhongMaterial::from_srgb({7, 37, 52}, {21, 98, 137}, {68, 68, 68}, std::nullopt), {}, {}, {0, 0, -1});
+    const LinearGouraudShader linear{&linear_lighting};
+    for (std::size_t first = 0; first < values.size(); first += kLanes) {
+        const std::size_t n = std::min<std::size_t>(kLanes, values.size() - first);
+        const std::span<const float> batch(values.data() + first, n);
+        std::vector<LinearRgb> colours;  // each channel a different value, so lanes mix
+        for (std::size_t i = 0; i < n; ++i) colours.push_back({batch[i], batch[(i + 1) % n], batch[(i + 2) % n]});
+        std::array<Rgb, kLanes> scaled{}, encoded{};
+        gouraud.pixels(batch, std::span(scaled).first(n));
+        linear.pixels(colours, std::span(encoded).first(n));
+        for (std::size_t i = 0; i < n; ++i) {
+            EXPECT_EQ(scaled[i], gouraud.pixel(batch[i])) << "intensity " << batch[i];
+            EXPECT_EQ(encoded[i], linear.pixel(colours[i])) << "colour " << colours[i].r << ", " << colours[i].g << ", " << colours[i].b;
+        }
+    }
+}

@@ -114,4 +114,7 @@ private:
     return {channel(base.r), channel(base.g), channel(base.b)};
 }
 
+// scaled_colour(base, intensity[i]) for lane i of the first out.size(), in SIMD lanes.
+void scaled_colours(Rgb base, const LaneFloats& intensity, std::span<Rgb> out) noexcept;
+
 }  // namespace raster

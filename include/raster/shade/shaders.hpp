@@ -35,6 +35,12 @@ struct IntensityShader {
 
     [[nodiscard]] Varying vertex(const Corner& corner) const noexcept { return lighting->intensity(corner.normal); }
     [[nodiscard]] Rgb pixel(Varying intensity) const noexcept { return scaled_colour(lighting->material.base, intensity); }
+    // pixel() at up to kLanes intensities at once, in SIMD lanes.
+    void pixels(std::span<const Varying> intensities, std::span<Rgb> out) const noexcept {
+        LaneFloats lanes{};
+        for (std::size_t i = 0; i < intensities.size(); ++i) lanes[i] = intensities[i];
+        scaled_colours(lighting->material.base, lanes, out.first(intensities.size()));
+    }
 };
 
 // One intensity per facet from its normal: 0.0.8 to 0.0.11.
@@ -58,7 +64,7 @@ struct PhongShader {
         for (std::size_t i = 0; i < normals.size(); ++i) put_lane(lanes, i, normals[i]);
         LaneFloats intensity{};
         lighting->intensity_lanes(lanes, intensity, static_cast<int>(normals.size()));
-        for (std::size_t i = 0; i < normals.size(); ++i) out[i] = scaled_colour(lighting->material.base, intensity[i]);
+        scaled_colours(lighting->material.base, intensity, out.first(normals.size()));
     }
 };
 
@@ -72,6 +78,12 @@ struct LinearColourShader {
 
     [[nodiscard]] Varying vertex(const Corner& corner) const noexcept { return lighting->shade(corner.position, corner.normal); }
     [[nodiscard]] Rgb pixel(const Varying& colour) const noexcept { return srgb_from_linear(colour); }
+    // pixel() at up to kLanes colours at once.
+    void pixels(std::span<const Varying> colours, std::span<Rgb> out) const noexcept {
+        LaneRgb lanes;
+        for (std::size_t i = 0; i < colours.size(); ++i) put_lane(lanes, i, colours[i]);
+        srgb_from_linear(lanes, out.first(colours.size()));
+    }
 };
 
 using LinearFlatShader = LinearColourShader<true>;
