@@ -36,6 +36,7 @@ void shade_triangle_samples(SampleBuffer& target, bool depth_test, const std::ar
     const Varying along2 = corners[2].varying - base;
     const double z0 = corners[0].depth, z1 = corners[1].depth - z0, z2 = corners[2].depth - z0;
     const double inv0 = 1.0 / corners[0].depth, inv1 = 1.0 / corners[1].depth, inv2 = 1.0 / corners[2].depth;
+    const PerspectiveWeights weights(w1, w2, inv0, inv1, inv2);
     bool constant = false;
     Rgb constant_colour{};
     if constexpr (!NeedsFootprint<Shader> && std::equality_comparable<Varying>) {
@@ -54,7 +55,7 @@ void shade_triangle_samples(SampleBuffer& target, bool depth_test, const std::ar
     const auto varying_at = [&](double a, double b) -> PixelVarying<Varying> {
         if constexpr (kMode == Interpolation::perspective) {
             const double q1 = a * inv1, q2 = b * inv2, sum = (1.0 - a - b) * inv0 + q1 + q2;
-            return perspective_varying<Shader>(base, along1, along2, {w1, w2, inv0, inv1, inv2}, q1, q2, sum, 1.0 / sum);
+            return perspective_varying<Shader>(base, along1, along2, weights, q1, q2, sum, 1.0 / sum);
         } else {
             const Varying varying = base + along1 * static_cast<float>(a) + along2 * static_cast<float>(b);
             if constexpr (NeedsFootprint<Shader>) {

@@ -10,6 +10,7 @@
 
 #include "rasterize/depth_only.hpp"
 #include "rasterize/lane_batch.hpp"
+#include "rasterize/perspective_run.hpp"
 
 #include <algorithm>
 #include <array>
@@ -41,18 +42,6 @@ struct ShadedCorner {
     Varying varying;
 };
 
-// The barycentric weight of one corner as a plane over pixel coordinates (i, j), measured from
-// corner 0 so that small triangles far from the origin keep their precision.
-struct WeightPlane {
-    double x0, y0;  // corner 0, subpixels
-    double per_subpixel_x, per_subpixel_y;
-    [[nodiscard]] double at(double i, double j) const noexcept {
-        return (i * kSubpixelOne - x0) * per_subpixel_x + (j * kSubpixelOne - y0) * per_subpixel_y;
-    }
-    [[nodiscard]] double per_pixel_x() const noexcept { return per_subpixel_x * kSubpixelOne; }
-    [[nodiscard]] double per_pixel_y() const noexcept { return per_subpixel_y * kSubpixelOne; }
-};
-
 // Weights of corners 1 and 2: w1 = ((P - p0) x b) / (a x b), w2 = (a x (P - p0)) / (a x b),
 // with a = p1 - p0 and b = p2 - p0; a x b is the exact twice_signed_area, never zero here.
 inline std::array<WeightPlane, 2> weight_planes(SubpixelPoint p0, SubpixelPoint p1, SubpixelPoint p2,
@@ -61,34 +50,6 @@ inline std::array<WeightPlane, 2> weight_planes(SubpixelPoint p0, SubpixelPoint 
     const double ax = p1.x - x0, ay = p1.y - y0, bx = p2.x - x0, by = p2.y - y0;
     const auto cross = static_cast<double>(twice_area);
     return {WeightPlane{x0, y0, by / cross, -bx / cross}, WeightPlane{x0, y0, -ay / cross, ax / cross}};
-}
-
-// How a triangle's attributes vary in perspective: the screen weights of corners 1 and 2 and
-// the reciprocal view depths of the three corners.
-struct PerspectiveWeights {
-    const WeightPlane& w1;
-    const WeightPlane& w2;
-    double inv0, inv1, inv2;
-};
-
-// The Varying at a point of a perspective triangle whose corner weights through 1/w are q1 / sum
-// and q2 / sum (sum = 1 / w, the view depth w) and, for a shader that filters, its change along
-// a screen step in x and in y.
-template <typename Shader, typename Varying = typename Shader::Varying>
-PixelVarying<Varying> perspective_varying(const Varying& base, const Varying& along1, const Varying& along2, const PerspectiveWeights& p,
-                                          double q1, double q2, double sum, double w) {
-    const double t1 = q1 * w, t2 = q2 * w;
-    PixelVarying<Varying> at{base + along1 * static_cast<float>(t1) + along2 * static_cast<float>(t2)};
-    if constexpr (NeedsFootprint<Shader>) {
-        // The derivative of (q_k / sum) along a screen step that moves a by da and b by db.
-        const auto change = [&](double da, double db) {
-            const double dsum = (-da - db) * p.inv0 + da * p.inv1 + db * p.inv2;
-            return along1 * static_cast<float>((da * p.inv1 - t1 * dsum) / sum) + along2 * static_cast<float>((db * p.inv2 - t2 * dsum) / sum);
-        };
-        at.per_x = change(p.w1.per_pixel_x(), p.w2.per_pixel_x());
-        at.per_y = change(p.w1.per_pixel_y(), p.w2.per_pixel_y());
-    }
-    return at;
 }
 
 // How attributes vary across the screen: linearly for an orthographic view; through 1/w for a
@@ -137,24 +98,31 @@ void shade_triangle(Framebuffer& colour, DepthBuffer* depth,
         // Screen weights a, b of corners 1 and 2 become b_k / w_k over their sum: the weights
         // of the surface point seen there; the sum is 1 / w, so the view depth comes with them.
         const double inv0 = 1.0 / corners[0].depth, inv1 = 1.0 / corners[1].depth, inv2 = 1.0 / corners[2].depth;
+        const PerspectiveWeights weights(w1, w2, inv0, inv1, inv2);
+        constexpr auto kNeed = DepthOnly<Shader>         ? PerspectiveRun::Need::depth
+                               : NeedsFootprint<Shader> ? PerspectiveRun::Need::footprint
+                                                        : PerspectiveRun::Need::weights;
         rasterize_convex(points, clip, [&](Span span) {
             std::uint8_t* out = pixels + (static_cast<std::size_t>(span.y) * width + static_cast<std::size_t>(span.x_begin)) * 3;
             float* nearest = depth != nullptr ? depth->row(span.y) + span.x_begin : nullptr;
-            for (int x = span.x_begin; x < span.x_end; ++x, out += 3) {
-                const double a = w1.at(x, span.y), b = w2.at(x, span.y);
-                const double q1 = a * inv1, q2 = b * inv2, sum = (1.0 - a - b) * inv0 + q1 + q2;
-                const double w = 1.0 / sum;  // the view depth; one division serves all three
-                if (nearest != nullptr) {
-                    const float z = stored(static_cast<float>(w));
-                    if (z > nearest[x - span.x_begin]) continue;  // something nearer is already there
-                    nearest[x - span.x_begin] = z;
+            PerspectiveRun run;
+            for (int x = span.x_begin; x < span.x_end; x += PerspectiveRun::kSize) {
+                run.compute<kNeed>(weights, x, span.y);
+                const auto n = static_cast<std::size_t>(std::min(PerspectiveRun::kSize, span.x_end - x));
+                for (std::size_t k = 0; k < n; ++k, out += 3) {
+                    if (nearest != nullptr) {
+                        const float z = stored(run.depth[k]);
+                        float& there = nearest[static_cast<std::size_t>(x - span.x_begin) + k];
+                        if (z > there) continue;  // something nearer is already there
+                        there = z;
+                    }
+                    if constexpr (DepthOnly<Shader>) continue;
+                    if (constant) {
+                        out[0] = constant_colour.r, out[1] = constant_colour.g, out[2] = constant_colour.b;
+                        continue;
+                    }
+                    lanes.add(out, 1, run.varying<Shader>(k, base, along1, along2));
                 }
-                if constexpr (DepthOnly<Shader>) continue;
-                if (constant) {
-                    out[0] = constant_colour.r, out[1] = constant_colour.g, out[2] = constant_colour.b;
-                    continue;
-                }
-                lanes.add(out, 1, perspective_varying<Shader>(base, along1, along2, {w1, w2, inv0, inv1, inv2}, q1, q2, sum, w));
             }
         });
         if (batch == nullptr) lanes.flush();
