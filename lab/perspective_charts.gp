@@ -14,7 +14,8 @@ set logscale y
 file = sprintf("%s/interpolation.csv", dir)
 plot file using (strcol(1) eq "affine" && $3 == 5 ? $6 : 1/0):4 every ::1 with linespoints pt 7 lc "#3366cc" title "affine, 5 deg down, 1..64 cells", \
      file using (strcol(1) eq "affine" && $3 == 20 ? $6 : 1/0):4 every ::1 with linespoints pt 9 lc "#2ca02c" title "affine, 20 deg down, 1..64 cells", \
-     file using (strcol(1) eq "perspective" ? $6 : 1/0):($4 + 1e-3) every ::1 with points pt 5 ps 1.6 lc "#d62728" title "through 1/w (product), 1 and 64 cells", \
+     file using (strcol(1) eq "perspective" ? $6 : 1/0):($4 + 1e-3) every ::1 with points pt 5 ps 1.6 lc "#d62728" title "through 1/w in double (product), 1 and 64 cells", \
+     file using (strcol(1) eq "perspective in float" ? $6 : 1/0):($4 + 1e-3) every ::1 with points pt 4 ps 1.6 lc "#9467bd" title "through 1/w in float, 1 and 64 cells", \
      file using (strcol(1) eq "affine" ? $6 : 1/0):4:(sprintf("%d", $2)) every ::1 with labels offset char 0.8, char 0.6 font ",9" notitle
 
 set output sprintf("%s/depth-perspective.svg", dir)

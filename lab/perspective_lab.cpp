@@ -76,11 +76,12 @@ struct Checkerboard {
     }
 };
 
-// The floor point seen at pixel centre (i, j), or nothing above the horizon.
-std::optional<glm::dvec2> floor_at(const raster::PerspectiveCamera& camera, int i, int j) {
+// The floor point seen at screen point (x, y) (pixel (i, j) has its centre at i + 0.5, j + 0.5),
+// or nothing above the horizon.
+std::optional<glm::dvec2> floor_at_point(const raster::PerspectiveCamera& camera, double x, double y) {
     // Invert the viewport and projection: a direction in view space, then in the world.
     const double t = std::tan(camera.lens().fov_y_degrees * std::numbers::pi / 360.0);
-    const double x_ndc = (i + 0.5) * 2.0 / kWidth - 1.0, y_ndc = 1.0 - (j + 0.5) * 2.0 / kHeight;
+    const double x_ndc = x * 2.0 / kWidth - 1.0, y_ndc = 1.0 - y * 2.0 / kHeight;
     const glm::dvec3 forward(camera.direction());
     const glm::dvec3 right = glm::normalize(glm::cross(glm::dvec3(0, 1, 0), forward));
     const glm::dvec3 up = glm::cross(forward, right);
@@ -90,31 +91,70 @@ std::optional<glm::dvec2> floor_at(const raster::PerspectiveCamera& camera, int 
     return glm::dvec2(ray.x * s, ray.z * s);
 }
 
+std::optional<glm::dvec2> floor_at(const raster::PerspectiveCamera& camera, int i, int j) { return floor_at_point(camera, i + 0.5, j + 0.5); }
+
+// The mip level a filter would choose at pixel (i, j) from texture coordinate changes per pixel
+// step dx and dy (world units): log2 of the longer, in texels.
+double mip_level(glm::dvec2 dx, glm::dvec2 dy) { return std::log2(std::max(glm::length(dx), glm::length(dy)) * kTexelsPerUnit); }
+
+// The exact mip level at pixel (i, j), from central differences of the ray-cast floor point.
+std::optional<double> exact_mip_level(const raster::PerspectiveCamera& camera, int i, int j) {
+    constexpr double h = 1e-3;
+    const auto left = floor_at_point(camera, i + 0.5 - h, j + 0.5), right = floor_at_point(camera, i + 0.5 + h, j + 0.5);
+    const auto above = floor_at_point(camera, i + 0.5, j + 0.5 - h), below = floor_at_point(camera, i + 0.5, j + 0.5 + h);
+    if (!left || !right || !above || !below) return std::nullopt;
+    return mip_level((*right - *left) / (2 * h), (*below - *above) / (2 * h));
+}
+
+// Keeps the point and its change per pixel step that every pixel is shaded with, like
+// lab::RecordingShader, for a shader that filters.
+struct FootprintRecorder {
+    using Varying = glm::vec3;
+    static constexpr bool kFacetNormal = false;
+    std::vector<glm::vec3>* seen;
+    std::vector<glm::vec3>* per_x;
+    std::vector<glm::vec3>* per_y;
+    [[nodiscard]] Varying vertex(const raster::Corner& corner) const noexcept { return corner.position; }
+    [[nodiscard]] raster::Rgb pixel(const glm::vec3& world, const glm::vec3& dx, const glm::vec3& dy) const noexcept {
+        per_x->push_back(dx), per_y->push_back(dy);
+        return lab::RecordingShader{seen}.pixel(world);
+    }
+};
+
 struct InterpolationRow {
     std::string method;
     int cells;
     double degrees;
     double worst_texels, mean_texels, ms;
+    double worst_levels = 0.0, mean_levels = 0.0;  // the mip level from the per-pixel derivatives
 };
 
 // Renders the floor and, for every covered pixel, compares the world point its colour came from:
 // the framebuffer keeps an index into the points the shader saw, in 24 bits.
-InterpolationRow measure_interpolation(bool perspective, int cells, double degrees) {
+// `mode`: affine (screen_linear), through 1/w in double (the product) or in float.
+InterpolationRow measure_interpolation(raster::detail::Interpolation mode, int cells, double degrees) {
+    using raster::detail::Interpolation;
     const raster::PerspectiveCamera camera = grazing_camera(degrees);
     const raster::Mesh mesh = floor_grid(cells);
     raster::Framebuffer image(kWidth, kHeight);
     std::vector<glm::vec3> seen;
     const auto draw = [&](const auto& shader) {
-        if (perspective) {
-            raster::detail::draw_facets_in_perspective(image, nullptr, camera, mesh, shader);
-        } else {
-            raster::detail::draw_facets_in_perspective<std::decay_t<decltype(shader)>, raster::detail::Interpolation::screen_linear>(
-                image, nullptr, camera, mesh, shader);
+        using Shader = std::decay_t<decltype(shader)>;
+        switch (mode) {
+        case Interpolation::screen_linear:
+            return raster::detail::draw_facets_in_perspective<Shader, Interpolation::screen_linear>(image, nullptr, camera, mesh, shader);
+        case Interpolation::perspective:
+            return raster::detail::draw_facets_in_perspective<Shader, Interpolation::perspective>(image, nullptr, camera, mesh, shader);
+        case Interpolation::perspective_float:
+            return raster::detail::draw_facets_in_perspective<Shader, Interpolation::perspective_float>(image, nullptr, camera, mesh, shader);
         }
+        return std::size_t{0};
     };
     image.clear({255, 255, 255});
-    draw(lab::RecordingShader{&seen});
-    InterpolationRow row{perspective ? "perspective" : "affine", cells, degrees, 0.0, 0.0, 0.0};
+    std::vector<glm::vec3> per_x, per_y;
+    draw(FootprintRecorder{&seen, &per_x, &per_y});
+    const char* const method = mode == Interpolation::screen_linear ? "affine" : mode == Interpolation::perspective ? "perspective" : "perspective in float";
+    InterpolationRow row{method, cells, degrees, 0.0, 0.0, 0.0};
     long count = 0;
     for (int j = 0; j < kHeight; ++j) {
         for (int i = 0; i < kWidth; ++i) {
@@ -126,9 +166,16 @@ InterpolationRow measure_interpolation(bool perspective, int cells, double degre
             row.worst_texels = std::max(row.worst_texels, error);
             row.mean_texels += error;
             ++count;
+            const std::optional<double> exact = exact_mip_level(camera, i, j);
+            if (!exact) continue;
+            const glm::vec3 dx = per_x[index], dy = per_y[index];
+            const double levels = std::abs(mip_level({dx.x, dx.z}, {dy.x, dy.z}) - *exact);
+            row.worst_levels = std::max(row.worst_levels, levels);
+            row.mean_levels += levels;
         }
     }
     row.mean_texels /= static_cast<double>(std::max(count, 1L));
+    row.mean_levels /= static_cast<double>(std::max(count, 1L));
     // Time: the checkerboard shader, median of 31 frames.
     std::vector<double> times;
     for (int r = 0; r < 31; ++r) {
@@ -244,9 +291,12 @@ int main(int argc, char** argv) {
     std::cerr << "perspective-lab: interpolation\n";
     std::vector<InterpolationRow> interpolation;
     for (const double degrees : {5.0, 20.0}) {
-        for (const int cells : {1, 2, 4, 8, 16, 32, 64}) interpolation.push_back(measure_interpolation(false, cells, degrees));
-        interpolation.push_back(measure_interpolation(true, 1, degrees));
-        interpolation.push_back(measure_interpolation(true, 64, degrees));
+        using raster::detail::Interpolation;
+        for (const int cells : {1, 2, 4, 8, 16, 32, 64}) interpolation.push_back(measure_interpolation(Interpolation::screen_linear, cells, degrees));
+        for (const Interpolation mode : {Interpolation::perspective, Interpolation::perspective_float}) {
+            interpolation.push_back(measure_interpolation(mode, 1, degrees));
+            interpolation.push_back(measure_interpolation(mode, 64, degrees));
+        }
     }
     std::cerr << "perspective-lab: clipping\n";
     std::vector<ClippingRow> clipping;
@@ -257,9 +307,10 @@ int main(int argc, char** argv) {
     const std::vector<DepthRow> depth = measure_depth();
 
     std::ofstream csv(out / "interpolation.csv");
-    csv << "method,cells,degrees,worst_texels,mean_texels,ms\n";
+    csv << "method,cells,degrees,worst_texels,mean_texels,ms,worst_levels,mean_levels\n";
     for (const InterpolationRow& r : interpolation) {
-        csv << r.method << ',' << r.cells << ',' << r.degrees << ',' << r.worst_texels << ',' << r.mean_texels << ',' << r.ms << '\n';
+        csv << r.method << ',' << r.cells << ',' << r.degrees << ',' << r.worst_texels << ',' << r.mean_texels << ',' << r.ms << ','
+            << r.worst_levels << ',' << r.mean_levels << '\n';
     }
     std::ofstream depth_csv(out / "depth-perspective.csv");
     depth_csv << "ratio";
@@ -278,11 +329,15 @@ int main(int argc, char** argv) {
     summary << "# Perspective summary\n\nWritten by `perspective-lab` (`tools/bootstrap.sh lab`), " << kWidth << " x " << kHeight
             << ".\n\n## Interpolation\n\nA floor 40 x 39.5 units (y = -1) seen from 1 above, looking 5 or 20 degrees down, "
             << "60-degree field of view; texture coordinates are world x and z at 256 texels per unit. Error: distance "
-            << "between the coordinates a pixel is shaded with and where its line of sight meets the floor. Time: median "
-            << "of 31 frames with a checkerboard shader.\n\n| method | cells | looking down | worst (texels) | mean (texels) | ms |\n|---|---|---|---|---|---|\n";
+            << "between the coordinates a pixel is shaded with and where its line of sight meets the floor; mip levels: "
+            << "how far the level chosen from the coordinates' change per pixel (log2 of the longer step, in texels) is "
+            << "from the exact one (central differences of the ray cast). Time: median of 31 frames with a checkerboard "
+            << "shader.\n\n| method | cells | looking down | worst (texels) | mean (texels) | worst (mip levels) | mean (mip levels) | ms |\n"
+            << "|---|---|---|---|---|---|---|---|\n";
     for (const InterpolationRow& r : interpolation) {
         summary << "| " << r.method << " | " << r.cells << " x " << r.cells << " | " << r.degrees << " deg | "
-                << number(r.worst_texels, "%.3f") << " | " << number(r.mean_texels, "%.3f") << " | " << number(r.ms, "%.2f") << " |\n";
+                << number(r.worst_texels, "%.3f") << " | " << number(r.mean_texels, "%.3f") << " | " << number(r.worst_levels, "%.4f")
+                << " | " << number(r.mean_levels, "%.5f") << " | " << number(r.ms, "%.2f") << " |\n";
     }
     summary << "\n## Clipping\n\nThe scene's still through `--perspective FOV`, Phong-shaded, depth-tested; all six planes "
             << "(x and y clipped at the image) against near and far with the guard band (product). Time: median of 31 "

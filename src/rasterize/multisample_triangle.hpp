@@ -24,6 +24,7 @@ template <typename Shader, Interpolation kMode>
 void shade_triangle_samples(SampleBuffer& target, bool depth_test, const std::array<ShadedCorner<typename Shader::Varying>, 3>& corners,
                             const Shader& shader, PixelRect rows, std::span<const SampleOffset> offsets,
                             LaneBatch<Shader>* batch = nullptr) {
+    static_assert(kMode != Interpolation::perspective_float, "a lab choice, drawn with one sample only");
     using Varying = typename Shader::Varying;
     const std::array<SubpixelPoint, 3> points{corners[0].at, corners[1].at, corners[2].at};
     const std::int64_t twice_area = twice_signed_area(points);

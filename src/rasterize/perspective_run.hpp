@@ -5,6 +5,7 @@
 #include "rasterize/lane_batch.hpp"
 
 #include <array>
+#include <type_traits>
 #include <experimental/simd>
 
 // A few neighbouring pixels of a row of a perspective triangle, their depths and
@@ -76,28 +77,32 @@ struct PerspectiveRun {
     Floats x1{}, x2{}, y1{}, y2{};  // d t_k / dx and d t_k / dy
 
     enum class Need { depth, weights, footprint };
+    enum class Precision { double_, single };
 
-    template <Need kNeed>
+    template <Need kNeed, Precision kPrecision = Precision::double_>
     [[gnu::flatten]] void compute(const PerspectiveWeights& p, int x, int y) noexcept {
         namespace stdx = std::experimental;
-        using Doubles = stdx::fixed_size_simd<double, kSize>;
+        using Real = std::conditional_t<kPrecision == Precision::single, float, double>;
+        using Reals = stdx::fixed_size_simd<Real, kSize>;
         using FloatLanes = stdx::fixed_size_simd<float, kSize>;
-        const auto store = [](const Doubles& v, Floats& to) {
+        const auto store = [](const Reals& v, Floats& to) {
             stdx::static_simd_cast<FloatLanes>(v).copy_to(to.data(), stdx::element_aligned);
         };
-        const Doubles i([x](auto k) { return static_cast<double>(x + static_cast<int>(k)); });
-        const double j = y;
-        const Doubles a = (i * kSubpixelOne - p.w1.x0) * p.w1.per_subpixel_x + (j * kSubpixelOne - p.w1.y0) * p.w1.per_subpixel_y;
-        const Doubles b = (i * kSubpixelOne - p.w2.x0) * p.w2.per_subpixel_x + (j * kSubpixelOne - p.w2.y0) * p.w2.per_subpixel_y;
-        const Doubles q1 = a * p.inv1, q2 = b * p.inv2, sum = (1.0 - a - b) * p.inv0 + q1 + q2;
-        const Doubles w = 1.0 / sum;  // the view depth; one division serves all three
+        const auto real = [](double v) { return static_cast<Real>(v); };
+        const Reals i([x](auto k) { return static_cast<Real>(x + static_cast<int>(k)); });
+        const auto j = static_cast<Real>(y);
+        const auto one = static_cast<Real>(kSubpixelOne);
+        const Reals a = (i * one - real(p.w1.x0)) * real(p.w1.per_subpixel_x) + (j * one - real(p.w1.y0)) * real(p.w1.per_subpixel_y);
+        const Reals b = (i * one - real(p.w2.x0)) * real(p.w2.per_subpixel_x) + (j * one - real(p.w2.y0)) * real(p.w2.per_subpixel_y);
+        const Reals q1 = a * real(p.inv1), q2 = b * real(p.inv2), sum = (Real(1) - a - b) * real(p.inv0) + q1 + q2;
+        const Reals w = Real(1) / sum;  // the view depth; one division serves all three
         store(w, depth);
         if constexpr (kNeed == Need::depth) return;
-        const Doubles u1 = q1 * w, u2 = q2 * w;
+        const Reals u1 = q1 * w, u2 = q2 * w;
         store(u1, t1), store(u2, t2);
         if constexpr (kNeed != Need::footprint) return;
-        store((p.per_x.dq1 - u1 * p.per_x.dsum) / sum, x1), store((p.per_x.dq2 - u2 * p.per_x.dsum) / sum, x2);
-        store((p.per_y.dq1 - u1 * p.per_y.dsum) / sum, y1), store((p.per_y.dq2 - u2 * p.per_y.dsum) / sum, y2);
+        store((real(p.per_x.dq1) - u1 * real(p.per_x.dsum)) / sum, x1), store((real(p.per_x.dq2) - u2 * real(p.per_x.dsum)) / sum, x2);
+        store((real(p.per_y.dq1) - u1 * real(p.per_y.dsum)) / sum, y1), store((real(p.per_y.dq2) - u2 * real(p.per_y.dsum)) / sum, y2);
     }
 
     // The Varying of lane k, as perspective_varying gives it.

@@ -53,8 +53,9 @@ inline std::array<WeightPlane, 2> weight_planes(SubpixelPoint p0, SubpixelPoint 
 }
 
 // How attributes vary across the screen: linearly for an orthographic view; through 1/w for a
-// perspective one, where each corner's depth is its view depth w > 0.
-enum class Interpolation { screen_linear, perspective };
+// perspective one, where each corner's depth is its view depth w > 0. The lab also tries the
+// perspective weights in float (perspective_float) against the product's double.
+enum class Interpolation { screen_linear, perspective, perspective_float };
 
 // Fills one triangle facing the camera. Varying needs +, - and * float; corner 0 anchors the
 // interpolation (v0 + w1 (v1 - v0) + w2 (v2 - v0)), so equal corners give that value exactly.
@@ -94,7 +95,7 @@ void shade_triangle(Framebuffer& colour, DepthBuffer* depth,
     LaneBatch<Shader> own(shader);
     LaneBatch<Shader>& lanes = batch != nullptr ? *batch : own;
 
-    if constexpr (kMode == Interpolation::perspective) {
+    if constexpr (kMode != Interpolation::screen_linear) {
         // Screen weights a, b of corners 1 and 2 become b_k / w_k over their sum: the weights
         // of the surface point seen there; the sum is 1 / w, so the view depth comes with them.
         const double inv0 = 1.0 / corners[0].depth, inv1 = 1.0 / corners[1].depth, inv2 = 1.0 / corners[2].depth;
@@ -107,7 +108,7 @@ void shade_triangle(Framebuffer& colour, DepthBuffer* depth,
             float* nearest = depth != nullptr ? depth->row(span.y) + span.x_begin : nullptr;
             PerspectiveRun run;
             for (int x = span.x_begin; x < span.x_end; x += PerspectiveRun::kSize) {
-                run.compute<kNeed>(weights, x, span.y);
+                run.compute<kNeed, kMode == Interpolation::perspective_float ? PerspectiveRun::Precision::single : PerspectiveRun::Precision::double_>(weights, x, span.y);
                 const auto n = static_cast<std::size_t>(std::min(PerspectiveRun::kSize, span.x_end - x));
                 for (std::size_t k = 0; k < n; ++k, out += 3) {
                     if (nearest != nullptr) {
