@@ -127,6 +127,7 @@ struct InterpolationRow {
     double degrees;
     double worst_texels, mean_texels, ms;
     double worst_levels = 0.0, mean_levels = 0.0;  // the mip level from the per-pixel derivatives
+    double worst_quad_levels = 0.0, mean_quad_levels = 0.0;  // from differences across 2 x 2 quads, as GPUs take it
 };
 
 // Renders the floor and, for every covered pixel, compares the world point its colour came from:
@@ -155,7 +156,13 @@ InterpolationRow measure_interpolation(raster::detail::Interpolation mode, int c
     draw(FootprintRecorder{&seen, &per_x, &per_y});
     const char* const method = mode == Interpolation::screen_linear ? "affine" : mode == Interpolation::perspective ? "perspective" : "perspective in float";
     InterpolationRow row{method, cells, degrees, 0.0, 0.0, 0.0};
-    long count = 0;
+    // The point pixel (i, j) was shaded with, when the floor covers it.
+    const auto seen_at = [&](int i, int j) -> std::optional<glm::dvec2> {
+        const std::uint32_t index = lab::recorded_index(image, i, j);
+        if (index >= seen.size()) return std::nullopt;
+        return glm::dvec2(seen[index].x, seen[index].z);
+    };
+    long count = 0, levelled = 0, quads = 0;
     for (int j = 0; j < kHeight; ++j) {
         for (int i = 0; i < kWidth; ++i) {
             const std::uint32_t index = lab::recorded_index(image, i, j);
@@ -172,10 +179,20 @@ InterpolationRow measure_interpolation(raster::detail::Interpolation mode, int c
             const double levels = std::abs(mip_level({dx.x, dx.z}, {dy.x, dy.z}) - *exact);
             row.worst_levels = std::max(row.worst_levels, levels);
             row.mean_levels += levels;
+            ++levelled;
+            // A GPU's level: the differences across the pixel's 2 x 2 quad, where all of it is covered.
+            const int qi = i & ~1, qj = j & ~1;
+            const auto left = seen_at(qi, j), right = seen_at(qi + 1, j), top = seen_at(i, qj), bottom = seen_at(i, qj + 1);
+            if (!left || !right || !top || !bottom) continue;
+            const double quad_levels = std::abs(mip_level(*right - *left, *bottom - *top) - *exact);
+            row.worst_quad_levels = std::max(row.worst_quad_levels, quad_levels);
+            row.mean_quad_levels += quad_levels;
+            ++quads;
         }
     }
     row.mean_texels /= static_cast<double>(std::max(count, 1L));
-    row.mean_levels /= static_cast<double>(std::max(count, 1L));
+    row.mean_levels /= static_cast<double>(std::max(levelled, 1L));
+    row.mean_quad_levels /= static_cast<double>(std::max(quads, 1L));
     // Time: the checkerboard shader, median of 31 frames.
     std::vector<double> times;
     for (int r = 0; r < 31; ++r) {
@@ -307,10 +324,10 @@ int main(int argc, char** argv) {
     const std::vector<DepthRow> depth = measure_depth();
 
     std::ofstream csv(out / "interpolation.csv");
-    csv << "method,cells,degrees,worst_texels,mean_texels,ms,worst_levels,mean_levels\n";
+    csv << "method,cells,degrees,worst_texels,mean_texels,ms,worst_levels,mean_levels,worst_quad_levels,mean_quad_levels\n";
     for (const InterpolationRow& r : interpolation) {
         csv << r.method << ',' << r.cells << ',' << r.degrees << ',' << r.worst_texels << ',' << r.mean_texels << ',' << r.ms << ','
-            << r.worst_levels << ',' << r.mean_levels << '\n';
+            << r.worst_levels << ',' << r.mean_levels << ',' << r.worst_quad_levels << ',' << r.mean_quad_levels << '\n';
     }
     std::ofstream depth_csv(out / "depth-perspective.csv");
     depth_csv << "ratio";
@@ -331,13 +348,15 @@ int main(int argc, char** argv) {
             << "60-degree field of view; texture coordinates are world x and z at 256 texels per unit. Error: distance "
             << "between the coordinates a pixel is shaded with and where its line of sight meets the floor; mip levels: "
             << "how far the level chosen from the coordinates' change per pixel (log2 of the longer step, in texels) is "
-            << "from the exact one (central differences of the ray cast). Time: median of 31 frames with a checkerboard "
-            << "shader.\n\n| method | cells | looking down | worst (texels) | mean (texels) | worst (mip levels) | mean (mip levels) | ms |\n"
-            << "|---|---|---|---|---|---|---|---|\n";
+            << "from the exact one (central differences of the ray cast), for the product's analytic derivatives and for "
+            << "a GPU's differences across 2 x 2 quads of the shaded points. Time: median of 31 frames with a checkerboard "
+            << "shader.\n\n| method | cells | looking down | worst (texels) | mean (texels) | worst (mip levels) | mean (mip levels) "
+            << "| quads: worst (mip levels) | quads: mean (mip levels) | ms |\n|---|---|---|---|---|---|---|---|---|---|\n";
     for (const InterpolationRow& r : interpolation) {
         summary << "| " << r.method << " | " << r.cells << " x " << r.cells << " | " << r.degrees << " deg | "
                 << number(r.worst_texels, "%.3f") << " | " << number(r.mean_texels, "%.3f") << " | " << number(r.worst_levels, "%.4f")
-                << " | " << number(r.mean_levels, "%.5f") << " | " << number(r.ms, "%.2f") << " |\n";
+                << " | " << number(r.mean_levels, "%.5f") << " | " << number(r.worst_quad_levels, "%.4f") << " | "
+                << number(r.mean_quad_levels, "%.5f") << " | " << number(r.ms, "%.2f") << " |\n";
     }
     summary << "\n## Clipping\n\nThe scene's still through `--perspective FOV`, Phong-shaded, depth-tested; all six planes "
             << "(x and y clipped at the image) against near and far with the guard band (product). Time: median of 31 "
