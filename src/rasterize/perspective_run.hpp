@@ -76,7 +76,7 @@ struct PerspectiveRun {
     Floats t1{}, t2{};
     Floats x1{}, x2{}, y1{}, y2{};  // d t_k / dx and d t_k / dy
 
-    enum class Need { depth, weights, footprint };
+    enum class Need { weights, footprint };
     enum class Precision { double_, single };
 
     template <Need kNeed, Precision kPrecision = Precision::double_>
@@ -97,7 +97,6 @@ struct PerspectiveRun {
         const Reals q1 = a * real(p.inv1), q2 = b * real(p.inv2), sum = (Real(1) - a - b) * real(p.inv0) + q1 + q2;
         const Reals w = Real(1) / sum;  // the view depth; one division serves all three
         store(w, depth);
-        if constexpr (kNeed == Need::depth) return;
         const Reals u1 = q1 * w, u2 = q2 * w;
         store(u1, t1), store(u2, t2);
         if constexpr (kNeed != Need::footprint) return;

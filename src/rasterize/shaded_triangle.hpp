@@ -100,15 +100,27 @@ void shade_triangle(Framebuffer& colour, DepthBuffer* depth,
         // of the surface point seen there; the sum is 1 / w, so the view depth comes with them.
         const double inv0 = 1.0 / corners[0].depth, inv1 = 1.0 / corners[1].depth, inv2 = 1.0 / corners[2].depth;
         const PerspectiveWeights weights(w1, w2, inv0, inv1, inv2);
-        constexpr auto kNeed = DepthOnly<Shader>         ? PerspectiveRun::Need::depth
-                               : NeedsFootprint<Shader> ? PerspectiveRun::Need::footprint
-                                                        : PerspectiveRun::Need::weights;
+        constexpr auto kNeed = NeedsFootprint<Shader> ? PerspectiveRun::Need::footprint : PerspectiveRun::Need::weights;
+        constexpr auto kPrecision = kMode == Interpolation::perspective_float ? PerspectiveRun::Precision::single : PerspectiveRun::Precision::double_;
         rasterize_convex(points, clip, [&](Span span) {
             std::uint8_t* out = pixels + (static_cast<std::size_t>(span.y) * width + static_cast<std::size_t>(span.x_begin)) * 3;
             float* nearest = depth != nullptr ? depth->row(span.y) + span.x_begin : nullptr;
+            if (constant || DepthOnly<Shader>) {
+                // Depth and one colour: a pixel at a time is quickest, the spans being short.
+                for (int x = span.x_begin; x < span.x_end; ++x, out += 3) {
+                    if (nearest != nullptr) {
+                        const double a = w1.at(x, span.y), b = w2.at(x, span.y);
+                        const float z = stored(static_cast<float>(1.0 / ((1.0 - a - b) * inv0 + a * inv1 + b * inv2)));
+                        if (z > nearest[x - span.x_begin]) continue;  // something nearer is already there
+                        nearest[x - span.x_begin] = z;
+                    }
+                    if constexpr (!DepthOnly<Shader>) out[0] = constant_colour.r, out[1] = constant_colour.g, out[2] = constant_colour.b;
+                }
+                return;
+            }
             PerspectiveRun run;
             for (int x = span.x_begin; x < span.x_end; x += PerspectiveRun::kSize) {
-                run.compute<kNeed, kMode == Interpolation::perspective_float ? PerspectiveRun::Precision::single : PerspectiveRun::Precision::double_>(weights, x, span.y);
+                run.compute<kNeed, kPrecision>(weights, x, span.y);
                 const auto n = static_cast<std::size_t>(std::min(PerspectiveRun::kSize, span.x_end - x));
                 for (std::size_t k = 0; k < n; ++k, out += 3) {
                     if (nearest != nullptr) {
@@ -116,11 +128,6 @@ void shade_triangle(Framebuffer& colour, DepthBuffer* depth,
                         float& there = nearest[static_cast<std::size_t>(x - span.x_begin) + k];
                         if (z > there) continue;  // something nearer is already there
                         there = z;
-                    }
-                    if constexpr (DepthOnly<Shader>) continue;
-                    if (constant) {
-                        out[0] = constant_colour.r, out[1] = constant_colour.g, out[2] = constant_colour.b;
-                        continue;
                     }
                     lanes.add(out, 1, run.varying<Shader>(k, base, along1, along2));
                 }
