@@ -26,6 +26,18 @@ Floats darkened(const DepthDarkening& d, const Floats& depth) noexcept {
     return out;
 }
 
+// LinearLighting::attenuated per lane.
+Floats attenuated_lanes(const PreparedPointLight& light, const Floats& distance, float brightest) noexcept {
+    const Falloff& f = light.falloff;
+    // Zero terms stay zero at an infinite distance (0 * inf would be NaN).
+    const Floats linear = f.linear == 0.0F ? Floats(0.0F) : f.linear * distance;
+    const Floats quadratic = f.quadratic == 0.0F ? Floats(0.0F) : f.quadratic * distance * distance;
+    Floats received = light.intensity / (f.constant + linear + quadratic);
+    stdx::where(received < -brightest, received) = -brightest;  // std::clamp's order
+    stdx::where(brightest < received, received) = brightest;
+    return received;
+}
+
 }  // namespace
 
 // Flattened: GCC leaves the eight-lane helpers out of line otherwise, and the calls cost more than the arithmetic.
@@ -68,8 +80,7 @@ Floats darkened(const DepthDarkening& d, const Floats& depth) noexcept {
         toward(light.position, unit, distance);
         const Mask lit = distance > 0.0F;  // at the light itself: no direction to light from
         if (stdx::none_of(lit)) continue;
-        Floats arriving;
-        for (std::size_t i = 0; i < Floats::size(); ++i) arriving[i] = attenuated(light, distance[i]);
+        const Floats arriving = attenuated_lanes(light, distance, kBrightest);
         stdx::where(lit, diffuse) += arriving * lanes::positive_part(lanes::dot(normal, unit));
         if (power_.enabled()) {
             stdx::where(lit, specular) += arriving * lanes::powered(power_, lanes::positive_part(lanes::dot(normal, lanes::unit_or_zero(unit + to_eye))));
