@@ -2,12 +2,13 @@
 #include "scene_option.hpp"
 
 int main(int argc, char** argv) {
-    CLI::App app("Renders the animation of one diary scene (0.0.8 to 0.1.7), or of the Ptah and "
-                 "raster-engine seeds, to a lossless animated WebP that loops forever.",
+    CLI::App app("Renders the animation of one diary scene (0.0.8 to 0.1.7; by default the original's final "
+                 "animation), or of the Ptah and raster-engine seeds, to a lossless animated WebP that loops forever.",
                  "animated-scene");
     app.footer(scene_list() +
                "\nExamples:\n"
-               "  animated-scene                           # two tumbling tori, 360 frames, 7.2 s\n"
+               "  animated-scene                           # the original's final animation, 7.2 s\n"
+               "  animated-scene --scene shaders           # Phong and Gouraud side by side\n"
                "  animated-scene --scene orbit --effort fast orbit.webp\n"
                "  animated-scene --scene point-light --perspective 60 lamp.webp\n"
                "  animated-scene --scene flythrough --width 640 --height 360 fly.webp");

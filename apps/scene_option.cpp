@@ -8,7 +8,7 @@
 void add_scene_option(CLI::App& app, std::string& scene) {
     std::vector<std::string> names;
     for (const raster::SceneInfo& info : raster::diary_scenes()) names.emplace_back(info.name);
-    scene = names.back();
+    scene = std::string(raster::final_diary_scene().name);
     for (const raster::SeedSceneInfo& info : raster::seed_scenes()) names.emplace_back(info.name);
     app.add_option("--scene", scene, "Which scene of the diary or of the other seeds to render (listed below)")
         ->transform(one_of(names))
@@ -24,6 +24,8 @@ std::string scene_list() {
         release.resize(8, ' ');
         list += "  " + name + release + std::string(info.title) + "\n";
     }
+    list += "The default, " + std::string(raster::final_diary_scene().name) +
+            ", is also the original's final animation (0.1.7 to 0.1.9 drew it through their shaders).\n";
     list += "The other seeds' scenes, in their own perspective cameras:\n";
     for (const raster::SeedSceneInfo& info : raster::seed_scenes()) {
         std::string name(info.name);

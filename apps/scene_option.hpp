@@ -7,8 +7,8 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
-// --scene NAME, any of the diary's scenes (the latest by default) or the other seeds'; the help
-// lists them all.
+// --scene NAME, any of the diary's scenes (the original's final one by default) or the other
+// seeds'; the help lists them all.
 void add_scene_option(CLI::App& app, std::string& scene);
 // The scene list for a footer: one line each, "  torus           0.0.17  a Phong-shaded torus ...".
 std::string scene_list();

@@ -2,10 +2,11 @@
 #include "scene_option.hpp"
 
 int main(int argc, char** argv) {
-    CLI::App app("Renders the still of one diary scene (0.0.8 to 0.1.7), or of the Ptah and raster-engine seeds, to a lossless WebP.", "still-scene");
+    CLI::App app("Renders the still of one diary scene (0.0.8 to 0.1.7; by default the original's final scene), or of the Ptah and "
+                 "raster-engine seeds, to a lossless WebP.", "still-scene");
     app.footer(scene_list() +
                "\nExamples:\n"
-               "  still-scene                              # shaders -> still-scene.webp\n"
+               "  still-scene                              # point-lights -> still-scene.webp\n"
                "  still-scene --scene two-spheres spheres.webp\n"
                "  still-scene --scene point-light --perspective 50 lamp.webp\n"
                "  still-scene --scene ptah ptah.webp\n"

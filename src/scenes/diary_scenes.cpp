@@ -128,6 +128,8 @@ glm::mat4 placed(glm::vec3 centre, float radius) { return glm::translate(glm::ma
 
 std::span<const SceneInfo> diary_scenes() noexcept { return kScenes; }
 
+const SceneInfo& final_diary_scene() noexcept { return kScenes[kPointLights]; }
+
 double ease_in_out_cubic(double u) noexcept {
     return u < 0.5 ? 4.0 * u * u * u : 1.0 - std::pow(-2.0 * u + 2.0, 3.0) / 2.0;
 }

@@ -26,12 +26,12 @@ Framebuffer still_of(std::string_view name, int width, int height) {
 
 }  // namespace
 
-TEST(StillSceneApp, WritesTheLatestSceneByDefault) {
+TEST(StillSceneApp, WritesTheOriginalsFinalSceneByDefault) {
     const ScratchDir dir;
     const auto result = run(kStillScene, {}, dir.path());
     ASSERT_EQ(result.exit_code, 0) << result.err;
     EXPECT_EQ(result.out.rfind("Wrote still-scene.webp: 800x600 still, ", 0), 0U) << result.out;
-    EXPECT_EQ(raster::read_webp(dir / "still-scene.webp").frames.at(0).image, still_of("shaders", 800, 600));
+    EXPECT_EQ(raster::read_webp(dir / "still-scene.webp").frames.at(0).image, still_of("point-lights", 800, 600));
 }
 
 TEST(StillSceneApp, EverySceneAtAnySizeDecodesToTheInMemoryRender) {
@@ -96,12 +96,12 @@ TEST(AnimatedSceneApp, HonoursFramesAndFps) {
     ASSERT_EQ(result.exit_code, 0) << result.err;
     const raster::DecodedWebp decoded = raster::read_webp(dir / "t.webp");
     ASSERT_EQ(decoded.frames.size(), 6U);
-    const raster::DiaryScene latest("shaders");
+    const raster::DiaryScene final_scene("point-lights");  // the default
     Framebuffer expected(80, 60);
     raster::DepthBuffer depth;
     for (int i = 0; i < 6; ++i) {
         EXPECT_EQ(decoded.frames[static_cast<std::size_t>(i)].start_ms, i * 100);
-        raster::render(expected, latest.frame(80, 60, i, 6), depth);
+        raster::render(expected, final_scene.frame(80, 60, i, 6), depth);
         EXPECT_EQ(decoded.frames[static_cast<std::size_t>(i)].image, expected) << "frame " << i;
     }
 }
@@ -117,7 +117,8 @@ TEST(SceneApps, HelpListsEverySceneWithTheReleaseItReCreates) {
             ASSERT_NE(at, std::string::npos) << app << " lacks " << info.name;
             EXPECT_NE(result.out.substr(at, 60).find(info.release), std::string::npos) << info.name;
         }
-        EXPECT_NE(result.out.find("--scene NAME [shaders]"), std::string::npos) << result.out;
+        EXPECT_NE(result.out.find("--scene NAME [point-lights]"), std::string::npos) << result.out;
+        EXPECT_NE(result.out.find("The default, point-lights, is also the original's final animation"), std::string::npos) << result.out;
     }
 }
 

@@ -148,3 +148,22 @@ TEST(LitCube, TheStyleAndTheSceneAreOneRender) {
         EXPECT_EQ(style, scene) << frame;
     }
 }
+
+// The exporters' default is the original's last animation (0.1.8 and 0.1.9): the torus(48, 32)
+// scaled 0.8, one directional light and two point lights, the three.js palette on 0x444444,
+// 360 frames, through the per-pixel Phong shader.
+TEST(DiaryScenes, TheDefaultIsTheOriginalsFinalAnimation) {
+    const raster::SceneInfo& info = raster::final_diary_scene();
+    EXPECT_EQ(info.name, "point-lights");
+    EXPECT_EQ(info.frames, 360);
+    const raster::Scene frame = raster::DiaryScene(info.name).frame(80, 60, 0, info.frames);
+    EXPECT_EQ(frame.background, (raster::Rgb{0x44, 0x44, 0x44}));
+    ASSERT_EQ(frame.lights.size(), 1U);
+    EXPECT_EQ(frame.lights[0].intensity, 0.5F);
+    ASSERT_EQ(frame.point_lights.size(), 2U);
+    EXPECT_EQ(frame.point_lights[0].intensity, 3.0F);
+    EXPECT_EQ(frame.point_lights[1].intensity, 3.0F);
+    ASSERT_EQ(frame.objects.size(), 1U);
+    EXPECT_EQ(frame.objects[0].shading, raster::ShadingMethod::phong);
+    EXPECT_EQ(frame.objects[0].mesh->facets.size(), 48U * 32U * 2U);
+}

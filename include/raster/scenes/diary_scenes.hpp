@@ -19,8 +19,13 @@ struct SceneInfo {
     int frames;                // frames of its animation at 20 ms each
 };
 
-// Every scene, oldest first; the last is the default.
+// Every scene, oldest first.
 [[nodiscard]] std::span<const SceneInfo> diary_scenes() noexcept;
+
+// The original's last animation, the exporters' default: 0.1.7 to 0.1.9 drew the torus of 0.1.6
+// (one directional and two point lights, grey background) through their new shaders, the same
+// picture, so it is `point-lights`.
+[[nodiscard]] const SceneInfo& final_diary_scene() noexcept;
 
 // Cubic ease-in-out on [0, 1]: 4u^3 below one half, 1 - (2 - 2u)^3 / 2 above.
 [[nodiscard]] double ease_in_out_cubic(double u) noexcept;
