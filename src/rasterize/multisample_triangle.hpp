@@ -70,6 +70,7 @@ void shade_triangle_samples(SampleBuffer& target, bool depth_test, const std::ar
     };
     LaneBatch<Shader> own(shader);
     LaneBatch<Shader>& lanes = batch != nullptr ? *batch : own;
+    if (constant) lanes.flush();  // its pixels are written at once: earlier triangles' queued ones first
 
     const SampleCoverage coverage(points, offsets);
     const int count = static_cast<int>(std::min<std::size_t>(offsets.size(), kMaxSamples));

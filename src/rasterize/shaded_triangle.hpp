@@ -94,6 +94,7 @@ void shade_triangle(Framebuffer& colour, DepthBuffer* depth,
 
     LaneBatch<Shader> own(shader);
     LaneBatch<Shader>& lanes = batch != nullptr ? *batch : own;
+    if (constant) lanes.flush();  // its pixels are written at once: earlier triangles' queued ones first
 
     if constexpr (kMode != Interpolation::screen_linear) {
         // Screen weights a, b of corners 1 and 2 become b_k / w_k over their sum: the weights

@@ -3,6 +3,9 @@
 
 #include "support/picture.hpp"
 
+#include <raster/geometry/shapes.hpp>
+
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -39,6 +42,21 @@ std::array<ShadedCorner<float>, 3> corners(SubpixelPoint a, SubpixelPoint b, Sub
                                            float depth_b = 0, float depth_c = 0) {
     return {{{a, depth_a, 0.0F}, {b, depth_b, 0.0F}, {c, depth_c, 0.0F}}};
 }
+
+// Blue below 100, red from there: which of two overlapping triangles a pixel shows.
+struct TwoTone {
+    using Varying = float;
+    [[nodiscard]] raster::Rgb pixel(float value) const noexcept { return value < 100 ? raster::Rgb{0, 0, 255} : raster::Rgb{255, 0, 0}; }
+};
+
+// A picture and a depth buffer, the depth used only when `depth_test`, for triangles drawn
+// through one batch.
+struct BatchTarget {
+    Framebuffer image{10, 5};
+    raster::DepthBuffer depth;
+    explicit BatchTarget(bool depth_test) { depth.prepare(10, 5), tested = depth_test ? &depth : nullptr; }
+    raster::DepthBuffer* tested = nullptr;
+};
 
 }  // namespace
 
@@ -134,21 +152,17 @@ TEST(ShadedTriangle, OnEqualDepthTheLaterFacetWins) {
 }
 
 // A batch left open across triangles (as a strip keeps it) still writes them in drawing order:
-// the later triangle's pixels land over the earlier one's, and a farther one's not at all.
+// the later triangle's pixels land over the earlier one's, and a farther one's not at all. The
+// third has unequal corners and goes through the batch; the flat case is the next test.
 TEST(ShadedTriangle, ABatchOpenAcrossTrianglesWritesInDrawingOrder) {
-    struct TwoTone {
-        using Varying = float;
-        [[nodiscard]] raster::Rgb pixel(float value) const noexcept { return value < 100 ? raster::Rgb{0, 0, 255} : raster::Rgb{255, 0, 0}; }
-    };
     const auto varied = [](std::array<ShadedCorner<float>, 3> c, float value) {  // unequal corners: no flat shortcut
         for (int k = 0; k < 3; ++k) c[static_cast<std::size_t>(k)].varying = value + static_cast<float>(k);
         return c;
     };
     for (const bool depth_test : {false, true}) {
-        Framebuffer image(10, 5);
-        raster::DepthBuffer depth;
-        depth.prepare(10, 5);
-        raster::DepthBuffer* const tested = depth_test ? &depth : nullptr;
+        BatchTarget target(depth_test);
+        Framebuffer& image = target.image;
+        raster::DepthBuffer* const tested = target.tested;
         const TwoTone shader;
         raster::detail::LaneBatch<TwoTone> lanes(shader);
         raster::detail::shade_triangle(image, tested, varied(corners(at(0, 0), at(6, 0), at(0, 4), 1, 1, 1), 1), shader, {}, std::nullopt, &lanes);
@@ -161,4 +175,57 @@ TEST(ShadedTriangle, ABatchOpenAcrossTrianglesWritesInDrawingOrder) {
                                                              : std::vector<std::string>{"BBBRRBBBB.", "BBBBBBBBR.", "BBB..BBRR.", "BB...B..R.", ".........."};
         EXPECT_TRUE(looks_like(image, expected, {{'B', {0, 0, 255}}, {'R', {255, 0, 0}}})) << (depth_test ? "depth test" : "painter's order");
     }
+}
+
+// A flat triangle (equal corners) writes its one colour at once, not through the batch: pixels
+// an earlier triangle left queued must land first, or they would cover it.
+TEST(ShadedTriangle, AFlatTriangleAfterAnOpenBatchStillCoversTheEarlierOne) {
+    for (const bool depth_test : {false, true}) {
+        BatchTarget target(depth_test);
+        Framebuffer& image = target.image;
+        raster::DepthBuffer* const tested = target.tested;
+        const TwoTone shader;
+        raster::detail::LaneBatch<TwoTone> lanes(shader);
+        auto red = corners(at(0, 0), at(8, 0), at(0, 4), 2, 2, 2);  // 20 pixels: four still queued at its end
+        for (int k = 0; k < 3; ++k) red[static_cast<std::size_t>(k)].varying = 101.0F + static_cast<float>(k);
+        raster::detail::shade_triangle(image, tested, red, shader, {}, std::nullopt, &lanes);
+        raster::detail::shade_triangle(image, tested, corners(at(0, 0), at(10, 0), at(0, 5), 1, 1, 1), shader, {}, std::nullopt, &lanes);
+        lanes.flush();
+        EXPECT_TRUE(looks_like(image, {"BBBBBBBBBB", "BBBBBBBB..", "BBBBBB....", "BBBB......", "BB........"}, {{'B', {0, 0, 255}}, {'R', {255, 0, 0}}}))
+            << (depth_test ? "depth test" : "painter's order");
+    }
+}
+
+// A whole mesh through one open batch draws what a batch per triangle draws: Gouraud tori lit
+// from one side, whose unlit facets (equal corners) are flat among shaded ones, seen from many
+// eyes, drawn in strips of 16 rows as the renderer draws them.
+TEST(ShadedTriangle, AMeshThroughOneBatchEqualsABatchPerTriangle) {
+    int differing = 0, views = 0;
+    for (const int detail : {1, 2}) {
+        const raster::Mesh torus = raster::torus(12 * detail, 8 * detail);
+        for (const glm::vec3 toward : {glm::vec3(1.0F, 0.3F, 0.2F), glm::vec3(-1.0F, -1.0F, 0.2F), glm::vec3(0.0F, 1.0F, 0.2F)}) {
+            const std::vector<raster::DirectionalLight> sun{{toward, 1.0F}};
+            const raster::Lighting lighting({{200, 120, 40}, 0.2F, 0.8F, std::nullopt}, sun, {0, 0, -1});
+            const raster::GouraudShader shader{&lighting};
+            for (const float height : {0.5F, 1.0F, 2.0F, 4.0F}) {
+                for (const float side : {0.0F, 1.5F, -2.0F}) {
+                    const auto camera = raster::OrthoCamera::look_at(160, 120, {side, height, 3.0F});
+                    Framebuffer shared(160, 120), separate(160, 120);
+                    raster::DepthBuffer shared_depth, separate_depth;
+                    shared_depth.prepare(160, 120), separate_depth.prepare(160, 120);
+                    for (int y = 0; y < 120; y += 16) {
+                        const raster::PixelRect rows{0, y, 160, std::min(16, 120 - y)};
+                        raster::detail::draw_facets(shared, &shared_depth, camera, torus, shader, {}, rows);
+                        raster::detail::facing_triangles(separate, &separate_depth, camera, torus, shader, [&](const auto& c) {
+                            if (raster::detail::misses_rows({c[0].at, c[1].at, c[2].at}, rows)) return;
+                            raster::detail::shade_triangle(separate, &separate_depth, c, shader, {}, rows);
+                        });
+                    }
+                    differing += shared == separate ? 0 : 1;
+                    ++views;
+                }
+            }
+        }
+    }
+    EXPECT_EQ(differing, 0) << "of " << views << " views depend on the batch";
 }
