@@ -11,7 +11,8 @@ int main(int argc, char** argv) {
                "  animated-scene --scene shaders           # Phong and Gouraud side by side\n"
                "  animated-scene --scene orbit --effort fast orbit.webp\n"
                "  animated-scene --scene point-light --perspective 60 lamp.webp\n"
-               "  animated-scene --scene flythrough --width 640 --height 360 fly.webp");
+               "  animated-scene --scene flythrough --width 640 --height 360 fly.webp\n"
+               "  animated-scene --scene islands --style wireframe wire.webp");
     ExportOptions options{"animated-scene.webp"};
     add_export_options(app, options);
     add_samples_option(app, options, "1 for the diary's scenes, " + std::to_string(raster::kSmoothSamples) + " for the seeds'");
@@ -26,6 +27,8 @@ int main(int argc, char** argv) {
     add_detail_option(app, automatic);
     int fov = 0;
     add_perspective_option(app, fov);
+    raster::RenderStyle style = raster::RenderStyle::textured;
+    add_render_style_option(app, style);
 
     return run_exporter(app, options, argc, argv, [&] {
         check_seed_options(name, automatic, fov);
@@ -35,7 +38,7 @@ int main(int argc, char** argv) {
             const int count = frames > 0 ? frames : seed.info().frames;
             raster::Renderer renderer(options.render_options());
             return export_animation(app, options, count, fps, [&](raster::Framebuffer& frame, int index) {
-                renderer.render(frame, seed.frame(frame.width(), frame.height(), index, count));
+                render_scene(frame, seed.frame(frame.width(), frame.height(), index, count), style, renderer);
             });
         }
         const raster::DiaryScene scene(name);
@@ -43,7 +46,7 @@ int main(int argc, char** argv) {
         const raster::DetailPlan plan = automatic ? plan_for(scene, options.width, options.height, count) : raster::DetailPlan{};
         raster::Renderer renderer(options.render_options());
         return export_animation(app, options, count, fps, [&](raster::Framebuffer& frame, int index) {
-            render_scene(frame, raster::with_detail(scene.frame(frame.width(), frame.height(), index, count), plan), fov, renderer);
+            render_scene(frame, raster::with_detail(scene.frame(frame.width(), frame.height(), index, count), plan), fov, style, renderer);
         }) + describe(plan);
     });
 }

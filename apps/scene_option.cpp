@@ -78,10 +78,51 @@ void add_perspective_option(CLI::App& app, int& fov_degrees) {
                        "close up)");
 }
 
-void render_scene(raster::Framebuffer& frame, const raster::Scene& scene, int fov_degrees, raster::Renderer& renderer) {
-    if (fov_degrees == 0) {
-        renderer.render(frame, scene);
-    } else {
-        renderer.render(frame, raster::in_perspective(scene, frame.width(), frame.height(), fov_degrees));
+void add_render_style_option(CLI::App& app, raster::RenderStyle& style) {
+    add_choice_option<raster::RenderStyle>(
+        app, "--style", style,
+        {{"textured", raster::RenderStyle::textured}, {"flat", raster::RenderStyle::flat}, {"wireframe", raster::RenderStyle::wireframe}},
+        "raster-engine's render modes. textured: the scene as it is; flat: each surface in its texture's mean colour, lit "
+        "once per facet; wireframe: the edges of the facets facing the eye, one-pixel lines in each surface's colour "
+        "(not anti-aliased, whatever --samples says)",
+        "textured");
+}
+
+namespace {
+
+template <typename Camera>
+void render_in_style(raster::Framebuffer& frame, const raster::BasicScene<Camera>& scene, raster::RenderStyle style, raster::Renderer& renderer) {
+    switch (style) {
+    case raster::RenderStyle::textured: renderer.render(frame, scene); break;
+    case raster::RenderStyle::flat: renderer.render(frame, raster::flat_style(scene)); break;
+    case raster::RenderStyle::wireframe: raster::draw_wireframe(frame, scene); break;
     }
+}
+
+}  // namespace
+
+void render_scene(raster::Framebuffer& frame, const raster::PerspectiveScene& scene, raster::RenderStyle style, raster::Renderer& renderer) {
+    render_in_style(frame, scene, style, renderer);
+}
+
+void render_scene(raster::Framebuffer& frame, const raster::Scene& scene, int fov_degrees, raster::RenderStyle style, raster::Renderer& renderer) {
+    if (fov_degrees != 0) {
+        render_in_style(frame, raster::in_perspective(scene, frame.width(), frame.height(), fov_degrees), style, renderer);
+    } else {
+        render_in_style(frame, scene, style, renderer);
+    }
+}
+
+void add_view_option(CLI::App& app, std::string& element) {
+    std::vector<std::string> names;
+    std::string list;
+    for (const raster::IslandElement& item : raster::island_elements()) {
+        names.emplace_back(item.name);
+        std::string name(item.name);
+        name.resize(16, ' ');
+        list += "\n  " + name + std::string(item.title);
+    }
+    app.add_option("--view", element, "A still of the islands framed on one element (implies --scene islands):" + list)
+        ->transform(one_of(names))
+        ->option_text("ELEMENT");
 }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <raster/geometry/auto_detail.hpp>
+#include <raster/render/render_style.hpp>
 #include <raster/scenes/diary_scenes.hpp>
 #include <raster/scenes/seed_scenes.hpp>
 
@@ -28,5 +29,12 @@ void check_seed_options(const std::string& scene, bool automatic, int fov_degree
 // --perspective DEGREES: 0 keeps the diary's orthographic camera; 1..179 looks through a pinhole
 // of that vertical field of view, the eye moved back so the scene keeps its framing.
 void add_perspective_option(CLI::App& app, int& fov_degrees);
-// Renders the scene through the camera the option chose.
-void render_scene(raster::Framebuffer& frame, const raster::Scene& scene, int fov_degrees, raster::Renderer& renderer);
+// --style textured|flat|wireframe: raster-engine's render modes, on every scene.
+void add_render_style_option(CLI::App& app, raster::RenderStyle& style);
+// Renders the scene through the camera the option chose, in the style chosen.
+void render_scene(raster::Framebuffer& frame, const raster::Scene& scene, int fov_degrees, raster::RenderStyle style,
+                  raster::Renderer& renderer);
+void render_scene(raster::Framebuffer& frame, const raster::PerspectiveScene& scene, raster::RenderStyle style, raster::Renderer& renderer);
+
+// --view NAME: a still framed on one element of the islands (raster::island_elements()).
+void add_view_option(CLI::App& app, std::string& element);

@@ -45,7 +45,7 @@ std::vector<Case> cases() {
             {"scenes", 2, 800, 600, 0.0, "three-lights"}, {"scenes", 2, 800, 600, 0.0, "point-lights"},
             {"scenes", 2, 800, 600, 0.0, "shaders"}, {"scenes", 2, 800, 600, 0.0, "torus", 60},
             {"scenes", 2, 800, 600, 0.0, "point-lights", 60}, {"scenes", 2, 800, 600, 0.0, "ptah"},
-            {"scenes", 2, 800, 600, 0.0, "flythrough"}};
+            {"scenes", 2, 800, 600, 0.0, "flythrough"}, {"scenes", 2, 800, 600, 0.0, "islands"}};
 }
 
 // Frames per second for `frames` frames of the torus tumble at this case's detail and size.

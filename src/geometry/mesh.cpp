@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <utility>
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
@@ -34,6 +35,25 @@ Mesh posed(const Mesh& mesh, const glm::mat4& model, PoseParts parts) {
     posing.vertices(0, std::max(mesh.positions.size(), mesh.normals.size()));
     posing.facets(0, mesh.facets.size());
     return std::move(posing).take();
+}
+
+void append_posed(Mesh& whole, const Mesh& part, const glm::mat4& model) {
+    const bool empty = whole.positions.empty();
+    if (!empty && (whole.uvs.empty() != part.uvs.empty() || whole.colours.empty() != part.colours.empty() || whole.surface != part.surface)) {
+        throw std::invalid_argument("append_posed: the parts differ in texture coordinates, colours or surface");
+    }
+    Mesh moved = posed(part, model);
+    const auto offset = static_cast<std::uint32_t>(whole.positions.size());
+    for (Facet& facet : moved.facets) {
+        for (std::uint32_t& corner : facet.corners) corner += offset;
+    }
+    whole.positions.insert(whole.positions.end(), moved.positions.begin(), moved.positions.end());
+    whole.normals.insert(whole.normals.end(), moved.normals.begin(), moved.normals.end());
+    whole.facets.insert(whole.facets.end(), moved.facets.begin(), moved.facets.end());
+    whole.uvs.insert(whole.uvs.end(), moved.uvs.begin(), moved.uvs.end());
+    whole.colours.insert(whole.colours.end(), moved.colours.begin(), moved.colours.end());
+    whole.surface = part.surface;
+    whole.convex = empty && part.convex;
 }
 
 namespace detail {

@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <vector>
 #include <glm/geometric.hpp>
 
 namespace raster {
@@ -83,6 +84,53 @@ Mesh textured_ground(float width, float depth, float tile) {
     const float x = width * 0.5F, z = depth * 0.5F;
     add_face(mesh, {glm::vec3(-x, 0, -z), glm::vec3(x, 0, -z), glm::vec3(x, 0, z), glm::vec3(-x, 0, z)},
              {glm::vec2(-x, -z) / tile, glm::vec2(x, -z) / tile, glm::vec2(x, z) / tile, glm::vec2(-x, z) / tile}, glm::vec3(0, -1, 0));
+    return mesh;
+}
+
+Mesh textured_prism(int sides, float radius, float length, float tile) {
+    Mesh mesh;
+    mesh.surface = Surface::faceted;
+    mesh.convex = true;
+    const float z = length * 0.5F;
+    const double step = 2.0 * std::numbers::pi / sides;
+    const float side = 2.0F * radius * static_cast<float>(std::sin(step / 2.0));
+    std::vector<glm::vec3> ring;
+    for (int k = 0; k < sides; ++k) {
+        ring.emplace_back(radius * static_cast<float>(std::cos(k * step)), radius * static_cast<float>(std::sin(k * step)), 0.0F);
+    }
+    for (int k = 0; k < sides; ++k) {
+        const glm::vec3 a = ring[static_cast<std::size_t>(k)], b = ring[static_cast<std::size_t>((k + 1) % sides)];
+        const float u0 = static_cast<float>(k) * side / tile, u1 = u0 + side / tile;
+        add_face(mesh, {a + glm::vec3(0, 0, -z), b + glm::vec3(0, 0, -z), b + glm::vec3(0, 0, z), a + glm::vec3(0, 0, z)},
+                 {glm::vec2(u0, -z / tile), glm::vec2(u1, -z / tile), glm::vec2(u1, z / tile), glm::vec2(u0, z / tile)}, glm::vec3(0.0F));
+    }
+    // Each cap a fan of triangles round its centre, so that any number of sides stays flat and convex.
+    for (const float end : {-z, z}) {
+        const glm::vec3 centre(0.0F, 0.0F, end), inside(0.0F, 0.0F, -end);
+        for (int k = 0; k < sides; ++k) {
+            const auto first = static_cast<std::uint32_t>(mesh.positions.size());
+            const glm::vec3 a = ring[static_cast<std::size_t>(k)] + centre, b = ring[static_cast<std::size_t>((k + 1) % sides)] + centre;
+            mesh.positions.insert(mesh.positions.end(), {centre, a, b});
+            mesh.uvs.insert(mesh.uvs.end(), {glm::vec2(0.0F), glm::vec2(a.x, a.y) / tile, glm::vec2(b.x, b.y) / tile});
+            mesh.facets.push_back(facet_facing_away(mesh.positions, first, first + 1, first + 2, inside));
+            mesh.normals.insert(mesh.normals.end(), 3, mesh.facets.back().normal);
+        }
+    }
+    return mesh;
+}
+
+Mesh textured_quad(const std::array<glm::vec3, 4>& corners, glm::vec3 inside, float tile) {
+    Mesh mesh;
+    mesh.surface = Surface::faceted;
+    mesh.convex = true;
+    const glm::vec3 along = unit_or_zero(corners[1] - corners[0]);
+    const glm::vec3 across = unit_or_zero(corners[3] - corners[0] - along * glm::dot(corners[3] - corners[0], along));
+    std::array<glm::vec2, 4> uvs{};
+    for (std::size_t k = 0; k < 4; ++k) {
+        const glm::vec3 d = corners[k] - corners[0];
+        uvs[k] = glm::vec2(glm::dot(d, along), glm::dot(d, across)) / tile;
+    }
+    add_face(mesh, corners, uvs, inside);
     return mesh;
 }
 

@@ -4,6 +4,8 @@
 #include <raster/geometry/primitives.hpp>
 #include <raster/shade/texture.hpp>
 
+#include "scenes/painted_textures.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -18,72 +20,13 @@ namespace raster {
 
 namespace {
 
-constexpr std::array<SeedSceneInfo, 2> kSeedScenes{{
+using namespace detail;
+
+constexpr std::array<SeedSceneInfo, 3> kSeedScenes{{
     {"ptah", "Ptah", "a textured knot in the article's camera and light", 360},
-    {"flythrough", "raster-engine", "a first-person flight over a textured island", 400},
+    {"flythrough", "raster-engine", "a first-person flight over a textured island (the early sketch)", 400},
+    {"islands", "raster-engine", "its whole world: two islands, canyon, waterfall, airport, planes, boat", 600},
 }};
-
-// A repeatable value in [0, 1) for texel (x, y) of pattern `seed`: texture grain without state.
-float grain(int x, int y, std::uint32_t seed) {
-    std::uint32_t h = static_cast<std::uint32_t>(x) * 374761393U + static_cast<std::uint32_t>(y) * 668265263U + seed * 2246822519U;
-    h = (h ^ (h >> 13)) * 1274126177U;
-    return static_cast<float>((h ^ (h >> 16)) & 0xFFFFU) / 65536.0F;
-}
-
-Rgb shade(Rgb base, float k) {
-    const auto c = [k](std::uint8_t v) { return static_cast<std::uint8_t>(std::clamp(static_cast<float>(v) * k, 0.0F, 255.0F)); };
-    return {c(base.r), c(base.g), c(base.b)};
-}
-
-std::shared_ptr<const Texture> painted(int width, int height, const std::function<Rgb(int, int)>& paint) {
-    Framebuffer image(width, height);
-    for (int y = 0; y < height; ++y) {
-        for (int x = 0; x < width; ++x) image.set_pixel(x, y, paint(x, y));
-    }
-    return std::make_shared<const Texture>(std::move(image));
-}
-
-// Overlapping round scales in rows, dark at their rims: the knot's skin.
-std::shared_ptr<const Texture> scales() {
-    return painted(64, 64, [](int x, int y) {
-        const int row = y / 16, shifted = x + (row % 2) * 8;
-        const float dx = static_cast<float>(shifted % 16) - 7.5F, dy = static_cast<float>(y % 16) - 2.0F;
-        const float d = std::min(1.0F, std::sqrt(dx * dx + dy * dy) / 14.0F);
-        const Rgb gold{214, 168, 58}, green{24, 96, 70};
-        const auto mix = [d](std::uint8_t a, std::uint8_t b) { return static_cast<std::uint8_t>(a + (b - a) * d); };
-        return Rgb{mix(gold.r, green.r), mix(gold.g, green.g), mix(gold.b, green.b)};
-    });
-}
-
-std::shared_ptr<const Texture> speckled(Rgb base, float spread, std::uint32_t seed) {
-    return painted(64, 64, [=](int x, int y) { return shade(base, 1.0F - spread + 2.0F * spread * grain(x, y, seed)); });
-}
-
-std::shared_ptr<const Texture> bricks() {
-    return painted(64, 64, [](int x, int y) {
-        const int row = y / 8, shifted = x + (row % 2) * 8;
-        if (y % 8 == 7 || shifted % 16 == 15) return Rgb{196, 192, 180};
-        return shade({168, 72, 50}, 0.85F + 0.3F * grain(shifted / 16, row, 7));
-    });
-}
-
-std::shared_ptr<const Texture> planks(Rgb base, int width) {
-    return painted(64, 64, [=](int x, int y) {
-        if (y % width == width - 1) return shade(base, 0.55F);
-        return shade(base, 0.85F + 0.25F * grain(x / 8, y / width, 3) + 0.05F * grain(x, y, 4));
-    });
-}
-
-std::shared_ptr<const Texture> waves() {
-    return painted(64, 64, [](int x, int y) {
-        const double crest = std::sin((x + 6.0 * std::sin(y * 0.3)) * 0.35);
-        return shade({34, 86, 160}, static_cast<float>(0.9 + 0.25 * crest * crest * crest) + 0.06F * grain(x, y, 9));
-    });
-}
-
-std::shared_ptr<const Texture> sail() {
-    return painted(64, 64, [](int x, int y) { return (y / 8) % 3 == 1 ? Rgb{200, 40, 40} : shade({236, 232, 220}, 0.95F + 0.05F * grain(x, y, 5)); });
-}
 
 PhongMaterial textured_material(float diffuse, float specular = 0.0F, std::optional<float> shininess = std::nullopt) {
     return {LinearRgb{}, LinearRgb{diffuse, diffuse, diffuse}, LinearRgb{specular, specular, specular}, shininess};
@@ -109,7 +52,11 @@ SeedScene::SeedScene(std::string_view name) : info_(nullptr) {
     for (const SeedSceneInfo& info : kSeedScenes) {
         if (info.name == name) info_ = &info;
     }
-    if (info_ == nullptr) throw std::invalid_argument("unknown seed scene '" + std::string(name) + "'; the scenes are ptah and flythrough");
+    if (info_ == nullptr) throw std::invalid_argument("unknown seed scene '" + std::string(name) + "'; the scenes are ptah, flythrough and islands");
+    if (info_->name == "islands") {
+        islands_ = std::make_shared<const IslandWorld>();
+        return;
+    }
     if (info_->name == "ptah") {
         // Ptah's diffuse-only light: 1.5 max(0, n.l) times the texture.
         moving_ = placed(torus_knot(2, 3, 0.38F, 360, 32, 30.0F), glm::mat4(1.0F), scales(), textured_material(1.5F));
@@ -138,7 +85,13 @@ SeedScene::SeedScene(std::string_view name) : info_(nullptr) {
 
 PerspectiveScene SeedScene::frame(int width, int height, int index, int count) const {
     const double along = count > 0 ? static_cast<double>(index) / count : 0.0;
+    if (islands_) return islands_->flight(width, height, along);
     return info_->name == "ptah" ? ptah(width, height, along) : flythrough(width, height, along);
+}
+
+PerspectiveScene SeedScene::view(std::string_view element, int width, int height) const {
+    if (!islands_) throw std::invalid_argument("only the islands have elements to frame; " + std::string(info_->name) + " has none");
+    return islands_->view(element, width, height);
 }
 
 PerspectiveScene SeedScene::ptah(int width, int height, double turn) const {

@@ -4,9 +4,11 @@
 #include <raster/scenes/scenes.hpp>
 #include <raster/scenes/seed_scenes.hpp>
 #include <raster/io/webp.hpp>
+#include <raster/render/render_style.hpp>
 
 #include "support/scratch.hpp"
 
+#include <filesystem>
 #include <gtest/gtest.h>
 
 using raster::Framebuffer;
@@ -160,4 +162,45 @@ TEST(AnimatedSceneApp, TheFlightIsAnAnimationOfItsOwnFrames) {
     raster::DepthBuffer depth;
     raster::render(expected, raster::SeedScene("flythrough").frame(64, 48, 2, 4), depth, {.samples = raster::kSmoothSamples});
     EXPECT_EQ(clip.frames[2].image, expected);
+}
+
+TEST(StillSceneApp, AViewFramesOneElementOfTheIslandsInAnyStyle) {
+    const ScratchDir dir;
+    const auto result = run(kStillScene, {"--width=64", "falls.webp", "--view", "waterfall", "--height", "48", "--effort", "fast"}, dir.path());
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    const raster::SeedScene islands("islands");
+    Framebuffer expected(64, 48);
+    raster::DepthBuffer depth;
+    raster::render(expected, islands.view("waterfall", 64, 48), depth, {.samples = raster::kSmoothSamples});
+    EXPECT_EQ(raster::read_webp(dir / "falls.webp").frames.at(0).image, expected);
+
+    const auto wire = run(kStillScene, {"--scene", "islands", "w.webp", "--style=wireframe", "--width", "64", "--height", "48"}, dir.path());
+    ASSERT_EQ(wire.exit_code, 0) << wire.err;
+    Framebuffer lines(64, 48);
+    raster::draw_wireframe(lines, islands.still(64, 48));
+    EXPECT_EQ(raster::read_webp(dir / "w.webp").frames.at(0).image, lines);
+
+    const auto other = run(kStillScene, {"--scene", "ptah", "--view", "boat", "x.webp"}, dir.path());
+    EXPECT_EQ(other.exit_code, 1);
+    EXPECT_EQ(other.err, "still-scene: --view frames an element of the islands; ptah has none\n");
+    const auto unknown = run(kStillScene, {"--view", "volcano", "x.webp"}, dir.path());
+    EXPECT_EQ(unknown.exit_code, 2);
+    EXPECT_NE(unknown.err.find("parked-plane"), std::string::npos) << unknown.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "x.webp"));
+    const auto style = run(kAnimatedScene, {"--style", "cel", "x.webp"}, dir.path());
+    EXPECT_EQ(style.exit_code, 2);
+    EXPECT_NE(style.err.find("wireframe"), std::string::npos) << style.err;
+}
+
+TEST(AnimatedSceneApp, TheIslandsFlyInFlatStyleFrameForFrame) {
+    const ScratchDir dir;
+    const auto result = run(kAnimatedScene, {"i.webp", "--scene", "islands", "--frames", "3", "--style", "flat", "--width", "48", "--height", "36", "--effort", "fast"},
+                            dir.path());
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    const raster::DecodedWebp clip = raster::read_webp(dir / "i.webp");
+    ASSERT_EQ(clip.frames.size(), 3U);
+    Framebuffer expected(48, 36);
+    raster::DepthBuffer depth;
+    raster::render(expected, raster::flat_style(raster::SeedScene("islands").frame(48, 36, 1, 3)), depth, {.samples = raster::kSmoothSamples});
+    EXPECT_EQ(clip.frames[1].image, expected);
 }

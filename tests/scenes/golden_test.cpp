@@ -5,6 +5,8 @@
 
 #include <raster/render/model_scene.hpp>
 #include <raster/scenes/seed_scenes.hpp>
+#include <raster/scenes/island_world.hpp>
+#include <raster/render/render_style.hpp>
 #include <raster/io/obj_file.hpp>
 
 #include "support/golden.hpp"
@@ -248,4 +250,29 @@ TEST(Golden, SeedScenes) {
         raster::render(image, fly.frame(image.width(), image.height(), i, fly.info().frames), depth, {.samples = raster::kSmoothSamples});
         EXPECT_TRUE(matches_snapshot(image, "seeds/flythrough-" + std::to_string(i)));
     }
+}
+
+// raster-engine's whole world: a still framed on each element, three frames of the flight (the
+// canyon, over the strait, down the runway), and its flat and wireframe render modes.
+TEST(Golden, IslandWorld) {
+    const raster::IslandWorld world;
+    for (const raster::IslandElement& element : raster::island_elements()) {
+        Framebuffer image(160, 120);
+        raster::DepthBuffer depth;
+        raster::render(image, world.view(element.name, image.width(), image.height()), depth, {.samples = raster::kSmoothSamples});
+        EXPECT_TRUE(matches_snapshot(image, "islands/" + std::string(element.name)));
+    }
+    const raster::SeedScene islands("islands");
+    for (const int i : {80, 250, 400}) {
+        Framebuffer image(160, 120);
+        raster::DepthBuffer depth;
+        raster::render(image, islands.frame(image.width(), image.height(), i, islands.info().frames), depth, {.samples = raster::kSmoothSamples});
+        EXPECT_TRUE(matches_snapshot(image, "islands/flight-" + std::to_string(i)));
+    }
+    Framebuffer flat(160, 120), wireframe(160, 120);
+    raster::DepthBuffer depth;
+    raster::render(flat, raster::flat_style(islands.still(160, 120)), depth, {.samples = raster::kSmoothSamples});
+    EXPECT_TRUE(matches_snapshot(flat, "islands/style-flat"));
+    raster::draw_wireframe(wireframe, islands.still(160, 120));
+    EXPECT_TRUE(matches_snapshot(wireframe, "islands/style-wireframe"));
 }

@@ -71,4 +71,8 @@ struct PoseParts {
 };
 [[nodiscard]] Mesh posed(const Mesh& mesh, const glm::mat4& model, PoseParts parts);
 
+// Adds `part`, moved by `model` (as posed() moves it), to `whole`: many parts that share a
+// surface become one mesh, drawn in one call. The result is convex only if both were empty or it.
+void append_posed(Mesh& whole, const Mesh& part, const glm::mat4& model);
+
 }  // namespace raster

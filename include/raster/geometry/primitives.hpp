@@ -2,6 +2,7 @@
 
 #include <raster/geometry/mesh.hpp>
 
+#include <array>
 #include <glm/vec3.hpp>
 
 // Textured building blocks, raster-engine's shapes: every mesh carries texture coordinates in
@@ -15,6 +16,12 @@ namespace raster {
 [[nodiscard]] Mesh textured_pyramid(float width, float depth, float height, float tile = 1.0F);
 // A horizontal rectangle at y = 0 facing +Y, centred on the origin.
 [[nodiscard]] Mesh textured_ground(float width, float depth, float tile = 1.0F);
+// A prism of `sides` equal sides round the Z axis (an octagon approximates a cylinder), from
+// z = -length/2 to +length/2, its corners at `radius`; capped at both ends. u runs round it, v along.
+[[nodiscard]] Mesh textured_prism(int sides, float radius, float length, float tile = 1.0F);
+// One flat face through four corners in order round its edge (either way), facing away from
+// `inside`; u along the first edge, v along the last, in world units over `tile`.
+[[nodiscard]] Mesh textured_quad(const std::array<glm::vec3, 4>& corners, glm::vec3 inside, float tile = 1.0F);
 // A (p, q) torus knot, a tube of `tube` radius about the curve
 // ((2 + cos qt) cos pt, sin qt, (2 + cos qt) sin pt) / 2, with u along the knot (`repeats` times)
 // and v round the tube; smooth normals.

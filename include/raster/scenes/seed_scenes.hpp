@@ -1,6 +1,7 @@
 #pragma once
 
 #include <raster/render/scene.hpp>
+#include <raster/scenes/island_world.hpp>
 
 #include <memory>
 #include <span>
@@ -8,7 +9,8 @@
 #include <vector>
 
 // The scenes of our two other seeds, in perspective: the Ptah article's textured model in its
-// own camera, and raster-engine's small world seen by a first-person camera flying through it.
+// own camera, and raster-engine's world seen by a first-person camera flying through it: the
+// early sketch of one island (flythrough) and the whole world (islands, island_world.hpp).
 // Models and textures are made here, procedurally; the originals' are not ours to ship.
 namespace raster {
 
@@ -31,6 +33,9 @@ public:
     [[nodiscard]] PerspectiveScene still(int width, int height) const { return frame(width, height, 0, info_->frames); }
     // Frame `index` of `count`: the model turns once, or the camera flies once round its loop.
     [[nodiscard]] PerspectiveScene frame(int width, int height, int index, int count) const;
+    // The islands' still framed on one element (island_elements()); throws std::invalid_argument
+    // for another scene or an unknown element.
+    [[nodiscard]] PerspectiveScene view(std::string_view element, int width, int height) const;
 
 private:
     [[nodiscard]] PerspectiveScene ptah(int width, int height, double turn) const;
@@ -39,6 +44,7 @@ private:
     const SeedSceneInfo* info_;
     std::vector<SceneObject> fixed_;  // what does not move
     SceneObject moving_;              // the model that turns, or the boat
+    std::shared_ptr<const IslandWorld> islands_;  // the whole world, for "islands"
 };
 
 }  // namespace raster
