@@ -1,4 +1,5 @@
 #include "exporter.hpp"
+#include "terminal_preview.hpp"
 
 #include <raster/io/png.hpp>
 #include <raster/version.hpp>
@@ -188,6 +189,12 @@ void add_output_options(CLI::App& app, ExportOptions& options) {
     app.add_flag("--follow-symlinks", options.policy.follow_symlinks,
                  "If FILE is a symbolic link, replace the file it points to; without this, links, "
                  "FIFOs and devices are refused");
+    app.add_flag("--preview", options.preview,
+                 "Also show the picture (an animation's first frame) in the terminal, scaled to its "
+                 "window, through the Kitty graphics protocol, which Kitty, WezTerm, Ghostty and Konsole "
+                 "speak; the terminal is asked first, for up to a second. Elsewhere, or when standard "
+                 "output is not a terminal, one line on stderr says why not. The file is written either "
+                 "way; not with - as FILE, which takes standard output for the file");
 }
 
 void add_export_options(CLI::App& app, ExportOptions& options) {
@@ -254,6 +261,11 @@ void Progress::stage(const std::string& what) {
     if (enabled_) show(what);
 }
 
+void Progress::pause() {
+    if (line_open_) std::cerr << "\r\033[K" << std::flush;
+    line_open_ = false;
+}
+
 void Progress::show(const std::string& text) {
     if (terminal_) {
         std::cerr << "\r\033[K" << program_ << ": " << text << std::flush;
@@ -264,6 +276,9 @@ void Progress::show(const std::string& text) {
 }
 
 void check_output(const CLI::App& app, const ExportOptions& options) {
+    if (options.output == "-" && options.preview) {
+        throw CLI::ValidationError("--preview shows the picture on standard output, which - takes for the file; name a file to write");
+    }
     if (options.output == "-") {
         if (is_terminal(1)) {
             throw std::runtime_error("standard output is a terminal; redirect it to a file or a pipe");
@@ -276,6 +291,12 @@ void check_output(const CLI::App& app, const ExportOptions& options) {
         std::cerr << app.get_name() << ": warning: '" << raster::printable(options.output) << "' does not end in "
                   << (png ? ".png, but it will hold PNG data\n" : ".webp, but it will hold WebP data\n");
     }
+}
+
+void preview(const CLI::App& app, const ExportOptions& options, const raster::Framebuffer& image, std::span<const std::uint8_t> alpha) {
+    if (!options.preview) return;
+    const std::string why_not = show_on_terminal(image, alpha);
+    if (!why_not.empty() && !options.quiet) std::cerr << app.get_name() << ": no preview: " << why_not << '\n' << std::flush;
 }
 
 void deliver(const ExportOptions& options, std::span<const std::uint8_t> bytes) {
@@ -337,6 +358,8 @@ std::function<FinishedPicture()> render_still(const CLI::App& app, const ExportO
     auto frame = std::make_shared<raster::Framebuffer>(options.width, options.height);
     auto alpha = std::make_shared<std::vector<std::uint8_t>>();
     render(*frame, *alpha);
+    progress->pause();
+    preview(app, options, *frame, *alpha);
     return [options, progress, frame, alpha] {
         progress->stage("encoding");
         const std::vector<std::uint8_t> bytes = options.image_format() == ImageFormat::png
@@ -406,6 +429,7 @@ std::string export_frames(const CLI::App& app, const ExportOptions& options, int
     for (int i = 0; i < frames; ++i) {
         alpha.clear();
         render(frame, i, alpha);
+        if (i == 0) preview(app, options, frame, alpha);
         const std::vector<std::uint8_t> bytes = raster::encode_png(frame, alpha);
         raster::write_output_file(frame_file(dir, i, frames), bytes, options.policy, options.inputs);
         total += bytes.size();
@@ -435,6 +459,10 @@ std::string export_animation(const CLI::App& app, const ExportOptions& options, 
     for (int i = 0; i < frames; ++i) {
         alpha.clear();
         render(frame, i, alpha);
+        if (i == 0) {
+            progress.pause();
+            preview(app, options, frame, alpha);
+        }
         encoder.add_frame(frame, alpha);
         progress.frame(i + 1, frames);
     }

@@ -37,6 +37,7 @@ struct ExportOptions {
     std::string frames_dir;  // an animation written as numbered PNG frames into this directory
     bool transparent = false;  // frames come with alpha: animations take the anim path, which keeps it
     bool show_progress = true;  // off for the pictures of a batch, which are made several at once
+    bool preview = false;  // show the picture (an animation's first frame) on the terminal too
 
     [[nodiscard]] ImageFormat image_format() const;
 
@@ -49,7 +50,7 @@ struct ExportOptions {
 // A CLI11 app whose help is wrapped to 80 columns and whose --version names the program.
 void configure_app(CLI::App& app);
 
-// OUTPUT / -o, --format, --effort, --quiet, --progress, --follow-symlinks.
+// OUTPUT / -o, --format, --effort, --quiet, --progress, --follow-symlinks, --preview.
 void add_output_options(CLI::App& app, ExportOptions& options);
 // --width and --height, then the output options.
 void add_export_options(CLI::App& app, ExportOptions& options);
@@ -95,6 +96,8 @@ public:
 
     void frame(int done, int total);
     void stage(const std::string& what);
+    // Clears the open progress line, so that what comes next starts on a clean line.
+    void pause();
 
 private:
     void show(const std::string& text);
@@ -108,6 +111,10 @@ private:
 // Fails early (a bad path, an input of this run, stdout on a terminal) and warns once about a
 // name not ending in the format's extension.
 void check_output(const CLI::App& app, const ExportOptions& options);
+// With --preview, shows the picture on the terminal through the Kitty graphics protocol, or says
+// in one line on stderr why it cannot (not with --quiet); the file is written either way.
+void preview(const CLI::App& app, const ExportOptions& options, const raster::Framebuffer& image,
+             std::span<const std::uint8_t> alpha = {});
 // Writes the finished bytes to the output file (atomically) or to standard output.
 void deliver(const ExportOptions& options, std::span<const std::uint8_t> bytes);
 

@@ -211,6 +211,7 @@ int main(int argc, char** argv) {
                        "Write an animation of this many frames, 1..10000, turning the model once about --up");
     add_animation_options(app, plan.fps, options);
     batch->excludes(app.get_option("--frames-dir"));
+    batch->excludes(app.get_option("--preview"));  // pictures made several at once: no one of them to show
     add_choice_option<raster::ShadingMethod>(app, "--shading", view.shading,
                                              {{"flat", raster::ShadingMethod::flat},
                                               {"gouraud", raster::ShadingMethod::gouraud},

@@ -42,6 +42,7 @@ int main(int argc, char** argv) {
             throw std::runtime_error("'" + input + "' has " + std::to_string(info.frame_count) +
                                      " frame(s), numbered 0.." + std::to_string(info.frame_count - 1));
         }
+        preview(app, options, *found, alpha);
         const std::vector<std::uint8_t> bytes = options.image_format() == ImageFormat::png ? raster::encode_png(*found, alpha)
                                                                                           : raster::encode_webp_still(*found, options.effort, alpha);
         deliver(options, bytes);

@@ -22,7 +22,7 @@ TXT
 }
 
 app_packages=(cmake g++ make pkg-config libglm-dev libwebp-dev libpng-dev libstb-dev libtinyobjloader-dev libassimp-dev libcli11-dev)
-base_packages=("${app_packages[@]}" libgtest-dev libbenchmark-dev webp assimp-testmodels)
+base_packages=("${app_packages[@]}" libgtest-dev libbenchmark-dev webp assimp-testmodels ffmpeg)
 
 install_missing() {
     local missing=()
