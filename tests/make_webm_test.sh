@@ -27,10 +27,12 @@ frames=6 width=160 height=120
 "$animated_cube" --quiet --frames "$frames" --width "$width" --height "$height" spin.webp
 "$animated_cube" --quiet --frames "$frames" --width "$width" --height "$height" --frames-dir rendered
 
+umask 022
 bash "$make_webm" spin.webp out >log 2>&1 || { cat log; echo "FAIL: make-webm exited $?"; exit 1; }
 cat log
 check "files written" "out-lossless.webm out.webm spin.webp" "$(ls -- *.webm *.webp | tr '\n' ' ' | sed 's/ $//')"
 check "no temporary files left" "" "$(ls -A | grep '^\.' || true)"
+check "modes as the umask gives new files" "644 644" "$(stat -c %a out-lossless.webm out.webm | tr '\n' ' ' | sed 's/ $//')"
 
 # Lossless: every decoded frame is the renderer's, byte for byte.
 ffmpeg -v error -i out-lossless.webm -f rawvideo -pix_fmt rgb24 decoded.rgb

@@ -95,6 +95,7 @@ encode() {  # encode OUTPUT FFMPEG-OPTIONS...: to a temporary file beside OUTPUT
     pending+=("$temporary")
     "$ffmpeg" -nostdin -hide_banner -loglevel error -y -framerate "1000/$spacing" -i "$work/frames/%04d.png" \
         -c:v libvpx-vp9 "$@" -an -f webm "$temporary" || fail "ffmpeg could not encode '$output'"
+    chmod "$(printf '%o' $((0666 & ~0$(umask))))" -- "$temporary"  # mktemp's 0600, opened up as a new file would be
     ln -- "$temporary" "$output" 2>/dev/null || fail "'$output' appeared while encoding; left it alone"
     rm -f -- "$temporary"
     echo "Wrote $output: $(stat -c %s -- "$output") bytes"
