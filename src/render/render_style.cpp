@@ -4,6 +4,7 @@
 
 #include "camera/clip_triangle.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 #include <glm/geometric.hpp>
@@ -39,8 +40,11 @@ Rgb line_colour(const SceneObject& object) {
                                       material.emissive.b + material.diffuse.b * mean.b});
 }
 
+// Halves up, as fills and lines round (doc/conventions.md#pixels); far-off ends are clamped
+// to a range draw_line walks safely, which only shortens what lies outside the picture.
 glm::ivec2 nearest_pixel(glm::dvec2 screen) {
-    return {static_cast<int>(std::lround(screen.x)), static_cast<int>(std::lround(screen.y))};
+    const auto round = [](double v) { return static_cast<int>(std::clamp(std::floor(v + 0.5), -16777216.0, 16777216.0)); };
+    return {round(screen.x), round(screen.y)};
 }
 
 // The edges of the facets facing the eye, each through `draw_edge(a, b)` in world space.
