@@ -3,6 +3,7 @@
 #include <raster/io/kitty_graphics.hpp>
 #include <raster/io/png.hpp>
 
+#include <array>
 #include <cerrno>
 #include <csignal>
 #include <cstring>
@@ -30,21 +31,33 @@ private:
     int fd_;
 };
 
-// Ctrl-C, Ctrl-Z and hang-ups wait while the terminal is raw, so that it is always restored.
+// The signal that came while the terminal was raw; static because a handler reaches nothing else.
+volatile std::sig_atomic_t held_signal = 0;
+extern "C" void hold_signal(int signal) { held_signal = signal; }
+
+// Ctrl-C, Ctrl-Z and hang-ups wait while the terminal is raw, on whichever thread they land,
+// and are raised again once it is restored (RawMode is destroyed first).
 class HeldSignals {
 public:
     HeldSignals() {
-        sigset_t held;
-        sigemptyset(&held);
-        for (const int signal : {SIGINT, SIGQUIT, SIGTERM, SIGHUP, SIGTSTP}) sigaddset(&held, signal);
-        ::pthread_sigmask(SIG_BLOCK, &held, &before_);
+        struct sigaction hold{};
+        hold.sa_handler = hold_signal;
+        sigemptyset(&hold.sa_mask);
+        for (std::size_t k = 0; k < kSignals.size(); ++k) ::sigaction(kSignals[k], &hold, &before_[k]);
     }
-    ~HeldSignals() { ::pthread_sigmask(SIG_SETMASK, &before_, nullptr); }
+    ~HeldSignals() {
+        for (std::size_t k = 0; k < kSignals.size(); ++k) ::sigaction(kSignals[k], &before_[k], nullptr);
+        if (const int signal = held_signal; signal != 0) {
+            held_signal = 0;
+            ::raise(signal);
+        }
+    }
     HeldSignals(const HeldSignals&) = delete;
     HeldSignals& operator=(const HeldSignals&) = delete;
 
 private:
-    sigset_t before_{};
+    static constexpr std::array<int, 5> kSignals{SIGINT, SIGQUIT, SIGTERM, SIGHUP, SIGTSTP};
+    std::array<struct sigaction, 5> before_{};
 };
 
 // Raw input (no line editing, no echo) for the answer, and the terminal's own settings back after.
@@ -92,7 +105,7 @@ raster::KittyAnswer ask_terminal(int tty, std::chrono::milliseconds timeout) {
     const auto deadline = std::chrono::steady_clock::now() + timeout;
     for (;;) {
         const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
-        if (left.count() <= 0) return raster::KittyAnswer::incomplete;
+        if (left.count() <= 0 || held_signal != 0) return raster::KittyAnswer::incomplete;
         pollfd wait{tty, POLLIN, 0};
         const int ready = ::poll(&wait, 1, static_cast<int>(left.count()));
         if (ready < 0 && errno == EINTR) continue;

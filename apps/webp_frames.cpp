@@ -42,6 +42,11 @@ int main(int argc, char** argv) {
             throw std::runtime_error("cannot make the frames directory '" + raster::printable(dir) + "'" +
                                      (error ? ": " + error.message() : ": a file of that name is in the way"));
         }
+        // Frames of another animation left here would follow ours into a video tool's %04d.png.
+        if (std::filesystem::exists(numbered(dir, 0), error)) {
+            throw std::runtime_error("'" + raster::printable(dir) + "' already holds frames (" + numbered(dir, 0).filename().string() +
+                                     "); choose an empty directory");
+        }
         int count = 0, shortest = 0, longest = 0;
         std::uintmax_t bytes = 0;
         const raster::WebpInfo info = raster::for_each_webp_frame(input, [&](const raster::DecodedFrame& frame) {

@@ -40,8 +40,7 @@ Rgb line_colour(const SceneObject& object) {
                                       material.emissive.b + material.diffuse.b * mean.b});
 }
 
-// Halves up, as fills and lines round (doc/conventions.md#pixels); far-off ends are clamped
-// to a range draw_line walks safely, which only shortens what lies outside the picture.
+// Halves up, as fills and lines round (doc/conventions.md#pixels); the clamp keeps int safe for orthographic ends far off.
 glm::ivec2 nearest_pixel(glm::dvec2 screen) {
     const auto round = [](double v) { return static_cast<int>(std::clamp(std::floor(v + 0.5), -16777216.0, 16777216.0)); };
     return {round(screen.x), round(screen.y)};
@@ -66,6 +65,7 @@ std::size_t front_edges(const Mesh& mesh, Facing facing, DrawEdge draw_edge) {
 bool clip_segment(const detail::ClipPlanes& planes, glm::dvec4& a, glm::dvec4& b) {
     for (const glm::dvec4& plane : planes.planes) {
         const double da = detail::ClipPlanes::distance(plane, a), db = detail::ClipPlanes::distance(plane, b);
+        if (std::isnan(da) || std::isnan(db)) return false;  // a corner at NaN has no place to cut
         if (!(da >= 0.0) && !(db >= 0.0)) return false;
         if (da >= 0.0 && db >= 0.0) continue;
         const glm::dvec4 cut = a + (b - a) * (da / (da - db));

@@ -59,7 +59,7 @@ void add_oak(TreeParts& trees, glm::vec3 where, float height) {
 }
 
 void add_palm(TreeParts& trees, glm::vec3 where, float yaw) {
-    // The trunk leans 0.2 rad away from the sea; the fronds sit on its tip.
+    // The trunk leans 0.2 rad, as palms do; the fronds sit on its tip.
     const glm::mat4 lean = glm::rotate(placed_at(where, yaw), 0.2F, glm::vec3(1, 0, 0));
     append_posed(trees.trunks, textured_box({0.35F, 5.0F, 0.35F}, 1.0F), lean * moved({0, 2.5F, 0}));
     for (int k = 0; k < 5; ++k) {

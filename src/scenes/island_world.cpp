@@ -204,7 +204,7 @@ IslandWorld::IslandWorld() {
     parts->hull = object(std::move(hull), glm::mat4(1.0F), planks({140, 92, 52}, 8));
     Mesh cabin;
     append_posed(cabin, textured_box({1.8F, 1.1F, 2.2F}, 1.0F), placed_at({0, 1.35F, -0.8F}));
-    append_posed(cabin, textured_box({0.12F, 1.6F, 0.12F}, 1.0F), placed_at({0, 2.7F, 0.6F}));
+    append_posed(cabin, textured_box({0.12F, 1.0F, 0.12F}, 1.0F), placed_at({0, 2.4F, 0.6F}));  // clears the bridge deck at 3.1 m
     parts->cabin = object(std::move(cabin), glm::mat4(1.0F), sail());
     parts->water = object(Mesh{}, glm::mat4(1.0F), streaks(), textured_material(1.0F, 0.3F, 60.0F));
     parts_ = std::move(parts);

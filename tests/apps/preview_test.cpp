@@ -218,3 +218,13 @@ TEST(Preview, ASilentTerminalOrOneWithoutGraphicsGetsOneLineWithinTheTimeout) {
     EXPECT_EQ(plain.shown.find("\x1b_Ga=T"), std::string::npos);
     EXPECT_LT(plain.seconds, silent.seconds) << "an answer ends the wait";
 }
+
+TEST(Preview, CtrlCDuringAnAnimationsQueryEndsItWithTheTerminalRestored) {
+    // The encoder's and renderer's threads already run then; the signal may land on any of them.
+    const ScratchDir dir;
+    const auto interrupted = run_on_kitty(test_support::kAnimatedCube, {"--preview", "--frames", "3", "--width", "64", "--height", "48", "a.webp"},
+                                          dir.path(), [](const std::string&) { return std::string("\x03"); }, kWindow);
+    EXPECT_EQ(interrupted.exit_code, -1) << "ended by the signal, as Ctrl-C should: " << interrupted.shown;
+    EXPECT_TRUE(interrupted.echo_and_lines) << "the terminal's settings come back before the signal ends the program";
+    EXPECT_FALSE(std::filesystem::exists(dir / "a.webp"));
+}

@@ -31,6 +31,10 @@ TEST(WebpFramesApp, WritesEveryFrameAsTheNumberedPngAPlayerShows) {
         EXPECT_EQ(png.image, expected) << name;
     }
     EXPECT_FALSE(std::filesystem::exists(dir / "frames" / "0012.png"));
+    // A directory that already holds frames is refused, so no stale frame follows ours.
+    const auto again = run(kWebpFrames, {"spin.webp", "frames"}, dir.path());
+    EXPECT_EQ(again.exit_code, 1);
+    EXPECT_EQ(again.err, "webp-frames: 'frames' already holds frames (0000.png); choose an empty directory\n");
 }
 
 TEST(WebpFramesApp, SaysWhenFramesLastUnequallyLong) {

@@ -17,7 +17,8 @@ enum class RenderStyle { textured, flat, wireframe };
 
 // Clears to the background and draws, in each object's unlit mean colour, the edges of its
 // facets that face the eye (back faces culled, nothing hidden by depth), as one-pixel DDA lines
-// (doc/conventions.md#lines) clipped to the near and far planes. Returns the facets drawn.
+// (doc/conventions.md#lines); in perspective each edge is first clipped to the near and far
+// planes and the guard band. Returns the facets drawn.
 std::size_t draw_wireframe(Framebuffer& framebuffer, const Scene& scene);
 std::size_t draw_wireframe(Framebuffer& framebuffer, const PerspectiveScene& scene);
 

@@ -5,7 +5,6 @@
 #include <memory>
 #include <span>
 #include <string_view>
-#include <vector>
 
 // raster-engine's whole world: two islands in an ocean, a canyon with a river and a waterfall,
 // mountains, beaches, a house, a bridge, three kinds of trees, an airport with a hangar and a
