@@ -2,6 +2,7 @@
 #include "terminal_preview.hpp"
 
 #include <raster/io/png.hpp>
+#include <raster/io/input_file.hpp>
 #include <raster/version.hpp>
 
 #include <algorithm>
@@ -381,6 +382,18 @@ std::string export_still(const CLI::App& app, const ExportOptions& options, cons
     return export_still(app, options, [&](raster::Framebuffer& frame, std::vector<std::uint8_t>&) { render(frame); });
 }
 
+bool parse_frame_range(const std::string& text, int& first, int& last) {
+    const std::size_t dots = text.find(".."), colon = text.find(':');
+    const std::size_t split = dots != std::string::npos ? dots : colon;
+    if (split == std::string::npos) return false;
+    const std::string_view a(text.data(), split), b(text.data() + split + (dots != std::string::npos ? 2 : 1));
+    const auto read = [](std::string_view digits, int& value) {
+        if (digits.empty() || digits.size() > 9 || !std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; })) return false;
+        return std::from_chars(digits.data(), digits.data() + digits.size(), value).ec == std::errc();
+    };
+    return read(a, first) && read(b, last) && first <= last;
+}
+
 void add_animation_options(CLI::App& app, int& fps, ExportOptions& options) {
     // Browsers play frames of 10 ms or less at 100 ms, so the fastest honest rate gives 11 ms.
     constexpr int kMaxFps = 95;
@@ -401,6 +414,19 @@ void add_animation_options(CLI::App& app, int& fps, ExportOptions& options) {
     for (const char* output : {"output", "--output"}) {
         if (CLI::Option* named = app.get_option_no_throw(output)) frames_dir->excludes(named);
     }
+    app.add_option("--frame-range", options.frame_range,
+                   "Render only frames A to B (both included, counted from 0) of the whole clip, each exactly as the whole "
+                   "run renders it: into an animation marked as that part, for webp-assemble to join with the others, or "
+                   "with --frames-dir into their own numbered files. A..B or A:B")
+        ->option_text("A..B")
+        ->check([](const std::string& text) -> std::string {
+            int first = 0, last = 0;
+            return parse_frame_range(text, first, last) ? std::string() : "'" + raster::printable(text) + "' is not A..B with 0 <= A <= B";
+        });
+    app.add_flag("--skip-existing", options.skip_existing,
+                 "Leave an output that is already complete (the same size and frames, or range) as it is and render "
+                 "nothing; with --frames-dir, render only the frames whose files are missing. Outputs are written "
+                 "atomically, so an interrupted run leaves no partial file to mistake for a finished one");
 }
 
 namespace {
@@ -413,6 +439,37 @@ std::filesystem::path frame_file(const std::filesystem::path& dir, int index, in
     return dir / (number + ".png");
 }
 
+// The frames to render: all of them, or --frame-range checked against the clip's length.
+std::optional<raster::FrameRange> chosen_range(const ExportOptions& options, int frames, int fps) {
+    int first = 0, last = 0;
+    if (options.frame_range.empty() || !parse_frame_range(options.frame_range, first, last)) return std::nullopt;
+    if (last >= frames) {
+        throw std::runtime_error("--frame-range " + options.frame_range + " goes past the clip's last frame, " + std::to_string(frames - 1));
+    }
+    return raster::FrameRange{first, last, frames, (1000 + fps / 2) / fps};
+}
+
+std::string range_text(const raster::FrameRange& range) {
+    return "frames " + std::to_string(range.first) + ".." + std::to_string(range.last) + " of " + std::to_string(range.total);
+}
+
+// Whether the output already holds what this run would write: a WebP of this size with these
+// frames, marked with this range (or unmarked for a whole clip). Anything unreadable is not.
+bool already_complete(const ExportOptions& options, const std::optional<raster::FrameRange>& range, int count) {
+    const std::filesystem::path path = options.output;
+    std::error_code error;
+    if (options.output == "-" || !std::filesystem::is_regular_file(path, error)) return false;
+    try {
+        const std::vector<std::uint8_t> bytes = raster::read_input_file(
+            path, raster::InputRules{"animation", raster::kMaxWebpFileBytes, raster::looks_like_webp, 12, "a WebP file", {}});
+        if (raster::frame_range_of(bytes) != range || raster::webp_frame_count(bytes) != count) return false;
+        const raster::WebpInfo info = raster::for_each_webp_frame(path, [](const raster::DecodedFrame&) { return false; });
+        return info.width == options.width && info.height == options.height;
+    } catch (const std::exception&) {
+        return false;
+    }
+}
+
 std::string export_frames(const CLI::App& app, const ExportOptions& options, int frames, int fps, const RenderFrame& render) {
     const std::filesystem::path dir = options.frames_dir;
     std::error_code error;
@@ -421,24 +478,35 @@ std::string export_frames(const CLI::App& app, const ExportOptions& options, int
         throw std::runtime_error("cannot make the frames directory '" + raster::printable(dir.string()) + "'" +
                                  (error ? ": " + error.message() : ": a file of that name is in the way"));
     }
-    for (int i = 0; i < frames; ++i) raster::check_output_path(frame_file(dir, i, frames), options.policy, options.inputs);
+    const std::optional<raster::FrameRange> range = chosen_range(options, frames, fps);
+    const int begin = range ? range->first : 0, end = range ? range->last + 1 : frames;
+    // Files are written atomically, so one that exists is a whole frame from an earlier run.
+    const auto skipped = [&](int i) { return options.skip_existing && std::filesystem::exists(frame_file(dir, i, frames), error); };
+    for (int i = begin; i < end; ++i) {
+        if (!skipped(i)) raster::check_output_path(frame_file(dir, i, frames), options.policy, options.inputs);
+    }
     raster::Framebuffer frame(options.width, options.height);
     Progress progress(app.get_name(), options);
     std::uintmax_t total = 0;
+    int written = 0;
     std::vector<std::uint8_t> alpha;
-    for (int i = 0; i < frames; ++i) {
+    for (int i = begin; i < end; ++i) {
+        if (skipped(i)) continue;
         alpha.clear();
         render(frame, i, alpha);
-        if (i == 0) preview(app, options, frame, alpha);
+        if (written == 0) preview(app, options, frame, alpha);
         const std::vector<std::uint8_t> bytes = raster::encode_png(frame, alpha);
         raster::write_output_file(frame_file(dir, i, frames), bytes, options.policy, options.inputs);
         total += bytes.size();
-        progress.frame(i + 1, frames);
+        ++written;
+        progress.frame(i - begin + 1, end - begin);
     }
-    return "Wrote " + raster::printable(frame_file(dir, 0, frames).string()) + " to " +
-           frame_file(dir, frames - 1, frames).filename().string() + ": " + std::to_string(frames) + " PNG frames of " +
+    const int kept = end - begin - written;
+    return "Wrote " + raster::printable(frame_file(dir, begin, frames).string()) + " to " +
+           frame_file(dir, end - 1, frames).filename().string() + ": " + std::to_string(written) + " PNG frames of " +
            std::to_string(options.width) + "x" + std::to_string(options.height) + " for " + std::to_string(fps) + " fps, " +
-           std::to_string(total) + " bytes";
+           std::to_string(total) + " bytes" + (kept > 0 ? ", " + std::to_string(kept) + " already there kept" : "") +
+           (range ? ", " + range_text(*range) : "");
 }
 
 }  // namespace
@@ -449,6 +517,12 @@ std::string export_animation(const CLI::App& app, const ExportOptions& options, 
         throw std::runtime_error("a PNG file holds one picture: write the animation to a .webp file, or to numbered PNG "
                                  "frames with --frames-dir DIR");
     }
+    const std::optional<raster::FrameRange> range = chosen_range(options, frames, fps);
+    const int begin = range ? range->first : 0, end = range ? range->last + 1 : frames;
+    if (options.skip_existing && already_complete(options, range, end - begin)) {
+        return "Skipped " + raster::printable(options.output) + ": it already holds " +
+               (range ? range_text(*range) : "all " + std::to_string(frames) + " frames");
+    }
     check_output(app, options);
     const int spacing_ms = (1000 + fps / 2) / fps;
     const raster::AnimationPath path = options.transparent ? raster::AnimationPath::anim : options.encoder;
@@ -456,22 +530,24 @@ std::string export_animation(const CLI::App& app, const ExportOptions& options, 
     raster::Framebuffer frame(options.width, options.height);
     std::vector<std::uint8_t> alpha;
     Progress progress(app.get_name(), options);
-    for (int i = 0; i < frames; ++i) {
+    for (int i = begin; i < end; ++i) {
         alpha.clear();
         render(frame, i, alpha);
-        if (i == 0) {
+        if (i == begin) {
             progress.pause();
             preview(app, options, frame, alpha);
         }
         encoder.add_frame(frame, alpha);
-        progress.frame(i + 1, frames);
+        progress.frame(i - begin + 1, end - begin);
     }
     progress.stage("assembling the animation");
-    const std::vector<std::uint8_t> bytes = encoder.finish();
+    std::vector<std::uint8_t> bytes = encoder.finish();
+    if (range) bytes = raster::mark_frame_range(bytes, *range);
     deliver(options, bytes);
     return describe_destination(options) + ": " + std::to_string(options.width) + "x" +
-           std::to_string(options.height) + ", " + std::to_string(frames) + " frames, " +
-           std::to_string(std::int64_t{frames} * spacing_ms) + " ms, " + std::to_string(bytes.size()) + " bytes";
+           std::to_string(options.height) + ", " + std::to_string(end - begin) + " frames, " +
+           std::to_string(std::int64_t{end - begin} * spacing_ms) + " ms, " + std::to_string(bytes.size()) + " bytes" +
+           (range ? ", " + range_text(*range) : "");
 }
 
 std::string export_animation(const CLI::App& app, const ExportOptions& options, int frames, int fps,

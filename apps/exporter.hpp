@@ -5,6 +5,7 @@
 #include <raster/render/scene.hpp>
 #include <raster/scenes/scenes.hpp>
 #include <raster/io/webp.hpp>
+#include <raster/io/webp_parts.hpp>
 
 #include <CLI/CLI.hpp>
 #include <cstdint>
@@ -35,6 +36,8 @@ struct ExportOptions {
     std::vector<raster::InputRecord> inputs;  // every file read: no output may replace one
     std::optional<ImageFormat> format;  // default: PNG for a name ending in .png, else WebP
     std::string frames_dir;  // an animation written as numbered PNG frames into this directory
+    std::string frame_range;  // --frame-range A..B: only those frames of the clip, as a marked part
+    bool skip_existing = false;  // --skip-existing: an output already complete is not rendered again
     bool transparent = false;  // frames come with alpha: animations take the anim path, which keeps it
     bool show_progress = true;  // off for the pictures of a batch, which are made several at once
     bool preview = false;  // show the picture (an animation's first frame) on the terminal too
@@ -147,12 +150,16 @@ struct FinishedPicture {
 std::function<FinishedPicture()> render_still(const CLI::App& app, const ExportOptions& options, const RenderStill& render);
 std::string export_still(const CLI::App& app, const ExportOptions& options,
                          const std::function<void(raster::Framebuffer&)>& render);
-// --fps 1..95, with the browsers' 10 ms rule in its help, --encoder parallel|anim and
-// --frames-dir DIR.
+// --fps 1..95, with the browsers' 10 ms rule in its help, --encoder parallel|anim,
+// --frames-dir DIR, --frame-range A..B and --skip-existing.
 void add_animation_options(CLI::App& app, int& fps, ExportOptions& options);
+// Reads "A..B" or "A:B" (decimal, 0 <= A <= B); false for anything else.
+bool parse_frame_range(const std::string& text, int& first, int& last);
 // Renders `frames` frames at `fps` into a looping animation, writes it and returns the line to
 // report: "Wrote out.webp: 800x600, 360 frames, 7200 ms, 205874 bytes". With --frames-dir the
 // frames are numbered PNG files in that directory instead.
+// With --frame-range only those frames are rendered, exactly as in the whole run, into an
+// animation marked with its range (webp_parts.hpp) or into their own numbered files.
 std::string export_animation(const CLI::App& app, const ExportOptions& options, int frames, int fps, const RenderFrame& render);
 std::string export_animation(const CLI::App& app, const ExportOptions& options, int frames, int fps,
                              const std::function<void(raster::Framebuffer&, int)>& render);

@@ -1,5 +1,6 @@
 // The only file that includes libwebp.
 #include <raster/io/webp.hpp>
+#include <raster/io/webp_parts.hpp>
 
 #include "io/task_pool.hpp"
 
@@ -470,6 +471,152 @@ DecodedWebp read_webp(const std::filesystem::path& path) {
     result.width = info.width;
     result.height = info.height;
     return result;
+}
+
+namespace {
+
+constexpr const char* kRangeChunk = "RNGE";
+
+using MuxPointer = std::unique_ptr<WebPMux, void (*)(WebPMux*)>;
+
+MuxPointer mux_of(std::span<const std::uint8_t> bytes, const std::string& name) {
+    const WebPData data{bytes.data(), bytes.size()};
+    MuxPointer mux(WebPMuxCreate(&data, 0), WebPMuxDelete);
+    if (!mux) throw std::runtime_error(name + " is not a WebP file");
+    return mux;
+}
+
+int frames_in(const WebPMux* mux) {
+    int frames = 0;
+    if (WebPMuxNumChunks(mux, WEBP_CHUNK_ANMF, &frames) != WEBP_MUX_OK) return 0;
+    return frames;
+}
+
+std::optional<FrameRange> range_in(const WebPMux* mux) {
+    WebPData chunk;
+    if (WebPMuxGetChunk(mux, kRangeChunk, &chunk) != WEBP_MUX_OK || chunk.size != 16) return std::nullopt;
+    const auto word = [&](std::size_t k) {
+        std::uint32_t value = 0;
+        for (std::size_t b = 0; b < 4; ++b) value |= static_cast<std::uint32_t>(chunk.bytes[k * 4 + b]) << (8 * b);
+        return value;
+    };
+    const std::uint32_t first = word(0), last = word(1), total = word(2), spacing = word(3);
+    if (!(first <= last && last < total && total <= static_cast<std::uint32_t>(std::numeric_limits<int>::max()))) return std::nullopt;
+    if (!(spacing >= 1 && spacing <= static_cast<std::uint32_t>(kMaxFrameSpacingMs))) return std::nullopt;
+    return FrameRange{static_cast<int>(first), static_cast<int>(last), static_cast<int>(total), static_cast<int>(spacing)};
+}
+
+std::string frames_text(int first, int last) {
+    return first == last ? "frame " + std::to_string(first) : "frames " + std::to_string(first) + ".." + std::to_string(last);
+}
+
+std::string in_no_part(int first, int last) { return frames_text(first, last) + (first == last ? " is" : " are") + " in no part"; }
+
+}  // namespace
+
+std::vector<std::uint8_t> mark_frame_range(std::span<const std::uint8_t> animation, FrameRange range) {
+    const MuxPointer mux = mux_of(animation, "the animation");
+    std::uint8_t words[16];
+    const std::uint32_t values[4] = {static_cast<std::uint32_t>(range.first), static_cast<std::uint32_t>(range.last),
+                                     static_cast<std::uint32_t>(range.total), static_cast<std::uint32_t>(range.spacing_ms)};
+    for (std::size_t k = 0; k < 16; ++k) words[k] = static_cast<std::uint8_t>(values[k / 4] >> (8 * (k % 4)));
+    const WebPData chunk{words, sizeof words};
+    WebPData data;
+    WebPDataInit(&data);
+    if (WebPMuxSetChunk(mux.get(), kRangeChunk, &chunk, 1) != WEBP_MUX_OK || WebPMuxAssemble(mux.get(), &data) != WEBP_MUX_OK) {
+        throw std::runtime_error("cannot mark the animation's frame range");
+    }
+    std::vector<std::uint8_t> bytes(data.bytes, data.bytes + data.size);
+    WebPDataClear(&data);
+    return bytes;
+}
+
+std::optional<FrameRange> frame_range_of(std::span<const std::uint8_t> animation) {
+    const WebPData data{animation.data(), animation.size()};
+    const MuxPointer mux(WebPMuxCreate(&data, 0), WebPMuxDelete);
+    return mux ? range_in(mux.get()) : std::nullopt;
+}
+
+int webp_frame_count(std::span<const std::uint8_t> webp) {
+    const MuxPointer mux = mux_of(webp, "the file");
+    const int frames = frames_in(mux.get());
+    return frames > 0 ? frames : 1;
+}
+
+std::vector<std::uint8_t> assemble_parts(std::vector<AnimationPart> parts) {
+    if (parts.empty()) throw std::runtime_error("no parts to assemble");
+    struct Opened {
+        const AnimationPart* part;
+        MuxPointer mux;
+        FrameRange range;
+    };
+    std::vector<Opened> opened;
+    for (const AnimationPart& part : parts) {
+        MuxPointer mux = mux_of(part.bytes, "'" + printable(part.name) + "'");
+        const std::optional<FrameRange> range = range_in(mux.get());
+        if (!range) throw std::runtime_error("'" + printable(part.name) + "' is not a part: it has no frame range (render it with --frame-range)");
+        const int frames = std::max(1, frames_in(mux.get()));  // a one-frame part is a still
+        if (frames != range->count()) {
+            throw std::runtime_error("'" + printable(part.name) + "' holds " + std::to_string(frames) + " frames, but its range " +
+                                     frames_text(range->first, range->last) + " has " + std::to_string(range->count()));
+        }
+        opened.push_back({&part, std::move(mux), *range});
+    }
+    std::sort(opened.begin(), opened.end(), [](const Opened& a, const Opened& b) { return a.range.first < b.range.first; });
+    const Opened& head = opened.front();
+    int width = 0, height = 0;
+    if (WebPMuxGetCanvasSize(head.mux.get(), &width, &height) != WEBP_MUX_OK) throw std::runtime_error("'" + printable(head.part->name) + "' has no canvas");
+    const WebPMuxAnimParams params{0xFF000000U, 0};  // as AnimationEncoder writes: loop forever
+    const MuxPointer whole(WebPMuxNew(), WebPMuxDelete);
+    int next = 0;
+    const int spacing = head.range.spacing_ms;
+    for (const Opened& piece : opened) {
+        const std::string name = "'" + printable(piece.part->name) + "'";
+        int w = 0, h = 0;
+        if (WebPMuxGetCanvasSize(piece.mux.get(), &w, &h) != WEBP_MUX_OK || w != width || h != height) {
+            throw std::runtime_error(name + " is " + std::to_string(w) + "x" + std::to_string(h) + ", the others " + std::to_string(width) + "x" +
+                                     std::to_string(height));
+        }
+        if (piece.range.total != head.range.total) {
+            throw std::runtime_error(name + " is part of a clip of " + std::to_string(piece.range.total) + " frames, '" +
+                                     printable(head.part->name) + "' of " + std::to_string(head.range.total));
+        }
+        if (piece.range.first > next) throw std::runtime_error(in_no_part(next, piece.range.first - 1));
+        if (piece.range.first < next) throw std::runtime_error(name + " repeats " + frames_text(piece.range.first, std::min(next - 1, piece.range.last)));
+        for (int k = 1; k <= piece.range.count(); ++k) {
+            WebPMuxFrameInfo frame{};
+            if (WebPMuxGetFrame(piece.mux.get(), static_cast<std::uint32_t>(k), &frame) != WEBP_MUX_OK) throw std::runtime_error(name + " has a corrupt frame");
+            const std::unique_ptr<WebPData, void (*)(WebPData*)> owned(&frame.bitstream, WebPDataClear);
+            if (frame.id != WEBP_CHUNK_ANMF) {  // a still: one frame lasting the range's spacing
+                frame.id = WEBP_CHUNK_ANMF;
+                frame.duration = piece.range.spacing_ms;
+            }
+            if (frame.duration != spacing || piece.range.spacing_ms != spacing) {
+                throw std::runtime_error(name + " shows frames for " + std::to_string(frame.duration) + " ms, the others for " + std::to_string(spacing));
+            }
+            if (k == 1) {
+                // A part's first frame must cover the canvas, since it will follow another part's last.
+                int fw = 0, fh = 0;
+                if (frame.x_offset != 0 || frame.y_offset != 0 || !WebPGetInfo(frame.bitstream.bytes, frame.bitstream.size, &fw, &fh) || fw != width ||
+                    fh != height) {
+                    throw std::runtime_error(name + " does not begin with a whole frame");
+                }
+                frame.blend_method = WEBP_MUX_NO_BLEND;
+            }
+            if (WebPMuxPushFrame(whole.get(), &frame, 1) != WEBP_MUX_OK) throw std::runtime_error("cannot add " + name + "'s frames");
+        }
+        next = piece.range.last + 1;
+    }
+    if (next != head.range.total) throw std::runtime_error(in_no_part(next, head.range.total - 1));
+    WebPData data;
+    WebPDataInit(&data);
+    if (WebPMuxSetAnimationParams(whole.get(), &params) != WEBP_MUX_OK || WebPMuxSetCanvasSize(whole.get(), width, height) != WEBP_MUX_OK ||
+        WebPMuxAssemble(whole.get(), &data) != WEBP_MUX_OK) {
+        throw std::runtime_error("cannot assemble the animation");
+    }
+    std::vector<std::uint8_t> bytes(data.bytes, data.bytes + data.size);
+    WebPDataClear(&data);
+    return bytes;
 }
 
 }  // namespace raster

@@ -59,6 +59,7 @@ inline const std::string kAnimatedCube = RASTER_ANIMATED_CUBE;
 inline const std::string kStillUnitCube = RASTER_STILL_UNIT_CUBE;
 inline const std::string kWebpFrame = RASTER_WEBP_FRAME;
 inline const std::string kWebpFrames = RASTER_WEBP_FRAMES;
+inline const std::string kWebpAssemble = RASTER_WEBP_ASSEMBLE;
 inline const std::string kStillScene = RASTER_STILL_SCENE;
 inline const std::string kAnimatedScene = RASTER_ANIMATED_SCENE;
 inline const std::string kRender = RASTER_RENDER;
