@@ -424,8 +424,9 @@ void add_animation_options(CLI::App& app, int& fps, ExportOptions& options) {
             return parse_frame_range(text, first, last) ? std::string() : "'" + raster::printable(text) + "' is not A..B with 0 <= A <= B";
         });
     app.add_flag("--skip-existing", options.skip_existing,
-                 "Leave an output that is already complete (the same size and frames, or range) as it is and render "
-                 "nothing; with --frames-dir, render only the frames whose files are missing. Outputs are written "
+                 "Leave an animation that is already complete (the same size and frames, or range) as it is and render "
+                 "nothing; with --frames-dir, render only the frames whose files are missing; with render --output-dir, "
+                 "only the models whose pictures are missing. Outputs are written "
                  "atomically, so an interrupted run leaves no partial file to mistake for a finished one");
 }
 
@@ -453,18 +454,26 @@ std::string range_text(const raster::FrameRange& range) {
     return "frames " + std::to_string(range.first) + ".." + std::to_string(range.last) + " of " + std::to_string(range.total);
 }
 
-// Whether the output already holds what this run would write: a WebP of this size with these
-// frames, marked with this range (or unmarked for a whole clip). Anything unreadable is not.
-bool already_complete(const ExportOptions& options, const std::optional<raster::FrameRange>& range, int count) {
+// Whether the output already holds what this run would write: this range (or none, for a
+// whole clip), this size and frame timing, and this run's first frame, drawn to compare.
+bool already_complete(const ExportOptions& options, const std::optional<raster::FrameRange>& range, int count, int spacing_ms,
+                      const raster::Framebuffer& first) {
     const std::filesystem::path path = options.output;
-    std::error_code error;
-    if (options.output == "-" || !std::filesystem::is_regular_file(path, error)) return false;
     try {
         const std::vector<std::uint8_t> bytes = raster::read_input_file(
             path, raster::InputRules{"animation", raster::kMaxWebpFileBytes, raster::looks_like_webp, 12, "a WebP file", {}});
-        if (raster::frame_range_of(bytes) != range || raster::webp_frame_count(bytes) != count) return false;
-        const raster::WebpInfo info = raster::for_each_webp_frame(path, [](const raster::DecodedFrame&) { return false; });
-        return info.width == options.width && info.height == options.height;
+        if (raster::frame_range_of(bytes) != range) return false;
+        bool same_first = false;
+        std::int64_t lasts_ms = 0;
+        int frames = 0;
+        const raster::WebpInfo info = raster::for_each_webp_frame(path, [&](const raster::DecodedFrame& frame) {
+            if (frames++ == 0) same_first = frame.image == first;
+            // libwebp's own encoder lengthens a frame instead of repeating it, down to a still (no duration).
+            const int lasts = frame.duration_ms > 0 ? frame.duration_ms : count * spacing_ms;
+            lasts_ms += lasts;
+            return same_first && lasts % spacing_ms == 0;
+        });
+        return same_first && info.width == options.width && info.height == options.height && lasts_ms == std::int64_t{count} * spacing_ms;
     } catch (const std::exception&) {
         return false;
     }
@@ -519,20 +528,27 @@ std::string export_animation(const CLI::App& app, const ExportOptions& options, 
     }
     const std::optional<raster::FrameRange> range = chosen_range(options, frames, fps);
     const int begin = range ? range->first : 0, end = range ? range->last + 1 : frames;
-    if (options.skip_existing && already_complete(options, range, end - begin)) {
-        return "Skipped " + raster::printable(options.output) + ": it already holds " +
-               (range ? range_text(*range) : "all " + std::to_string(frames) + " frames");
-    }
-    check_output(app, options);
     const int spacing_ms = (1000 + fps / 2) / fps;
-    const raster::AnimationPath path = options.transparent ? raster::AnimationPath::anim : options.encoder;
-    raster::AnimationEncoder encoder(options.width, options.height, spacing_ms, {options.effort, path, options.threads_in_use()});
     raster::Framebuffer frame(options.width, options.height);
     std::vector<std::uint8_t> alpha;
+    std::error_code error;
+    const bool drawn_first = options.skip_existing && options.output != "-" && std::filesystem::is_regular_file(options.output, error);
+    if (drawn_first) {
+        render(frame, begin, alpha);
+        if (already_complete(options, range, end - begin, spacing_ms, frame)) {
+            return "Skipped " + raster::printable(options.output) + ": it already holds " +
+                   (range ? range_text(*range) : "all " + std::to_string(frames) + " frames");
+        }
+    }
+    check_output(app, options);
+    const raster::AnimationPath path = options.transparent ? raster::AnimationPath::anim : options.encoder;
+    raster::AnimationEncoder encoder(options.width, options.height, spacing_ms, {options.effort, path, options.threads_in_use()});
     Progress progress(app.get_name(), options);
     for (int i = begin; i < end; ++i) {
-        alpha.clear();
-        render(frame, i, alpha);
+        if (i != begin || !drawn_first) {  // the first frame may be drawn already, to compare
+            alpha.clear();
+            render(frame, i, alpha);
+        }
         if (i == begin) {
             progress.pause();
             preview(app, options, frame, alpha);

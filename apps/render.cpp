@@ -266,6 +266,12 @@ int main(int argc, char** argv) {
         if (!options.frames_dir.empty() && plan.frames == 0) {
             throw CLI::ValidationError("--frames-dir writes the frames of a turntable; add --turntable N");
         }
+        if (!options.frame_range.empty() && plan.frames == 0) {
+            throw CLI::ValidationError("--frame-range picks frames of a turntable; add --turntable N");
+        }
+        if (options.skip_existing && plan.frames == 0 && output_dir.empty()) {
+            throw CLI::ValidationError("--skip-existing keeps finished turntables and the pictures of --output-dir; a single still is simply drawn again");
+        }
         if (!plan.texture_path.empty()) {
             plan.texture = std::make_shared<const raster::Texture>(
                 raster::read_texture(plan.texture_path, raster::kMaxTextureTexels, plan.obj.confine, &plan.texture_inputs));
@@ -310,7 +316,14 @@ int main(int argc, char** argv) {
             models.push_back(options.output);
         }
         models.insert(models.end(), more_models.begin(), more_models.end());
-        const std::vector<BatchJob> jobs = plan_batch(models, output_dir, extension);
+        std::vector<BatchJob> jobs = plan_batch(models, output_dir, extension);
+        std::size_t kept = 0;
+        if (options.skip_existing) {  // pictures are written atomically: one that exists is whole
+            kept = std::erase_if(jobs, [](const BatchJob& job) {
+                std::error_code missing;
+                return std::filesystem::exists(job.output, missing);
+            });
+        }
         std::error_code error;
         std::filesystem::create_directories(output_dir, error);
         if (error || !std::filesystem::is_directory(output_dir)) {
@@ -381,7 +394,8 @@ int main(int argc, char** argv) {
         const std::size_t written = drawn - failed_writes;
         const double seconds = seconds_since(start);
         const std::string summary = std::to_string(written) + " of " + std::to_string(jobs.size()) + " models into " +
-                                    raster::printable(output_dir) + " in " + seconds_text(seconds);
+                                    raster::printable(output_dir) + " in " + seconds_text(seconds) +
+                                    (kept > 0 ? ", " + std::to_string(kept) + " already there kept" : "");
         if (written < jobs.size()) throw std::runtime_error("wrote " + summary + "; " + std::to_string(jobs.size() - written) + " failed");
         char rate[64];
         std::snprintf(rate, sizeof rate, " (%.1f a second)", static_cast<double>(written) / std::max(seconds, 1e-9));

@@ -27,7 +27,13 @@ int main(int argc, char** argv) {
     return run_exporter(app, options, argc, argv, [&] {
         std::vector<raster::AnimationPart> parts;
         const raster::InputRules rules{"part", raster::kMaxWebpFileBytes, raster::looks_like_webp, 12, "a WebP file", {}};
-        for (const std::string& name : names) parts.push_back({name, raster::read_input_file(name, rules, &options.inputs)});
+        for (const std::string& name : names) {
+            try {
+                parts.push_back({name, raster::read_input_file(name, rules, &options.inputs)});
+            } catch (const std::runtime_error& problem) {
+                throw std::runtime_error("'" + raster::printable(name) + "' " + problem.what());
+            }
+        }
         const std::vector<std::uint8_t> bytes = raster::assemble_parts(std::move(parts));
         raster::write_output_file(options.output, bytes, options.policy, options.inputs);
         return "Wrote " + raster::printable(options.output) + ": " + std::to_string(raster::webp_frame_count(bytes)) + " frames from " +

@@ -13,6 +13,9 @@ usage: tools/bootstrap.sh COMMAND
                      pipeline, OBJ and texture loading for SECONDS each (default 60), then
                      replay the glTF/STL/PLY target's seeds
   lab                measure every raster method and redraw the charts in doc/lab/
+  cluster [DIR]      install Slurm and munge and start a one-node cluster on 127.0.0.1 with its
+                     state in DIR (default /tmp/raster-slurm); prints the SLURM_CONF line to export,
+                     and how to stop it (tools/cluster/local-slurm.sh stop DIR)
   bench [N]          build raster-vs-gl and time raster against Mesa's llvmpipe, every case
                      N times (default 3), interleaved; writes doc/bench/
   -h, --help         print this help
@@ -23,6 +26,8 @@ TXT
 
 app_packages=(cmake g++ make pkg-config libglm-dev libwebp-dev libpng-dev libstb-dev libtinyobjloader-dev libassimp-dev libcli11-dev)
 base_packages=("${app_packages[@]}" libgtest-dev libbenchmark-dev webp assimp-testmodels ffmpeg)
+# A one-node Slurm cluster for the Cluster test and the cluster job (tools/cluster/).
+cluster_packages=(slurmctld slurmd slurm-client munge)
 
 install_missing() {
     local missing=()
@@ -60,7 +65,7 @@ run)
     build/apps/bin/animated-cube "$output"
     ;;
 test)
-    install_missing "${base_packages[@]}"
+    install_missing "${base_packages[@]}" "${cluster_packages[@]}"
     build release
     ctest --preset release
     ;;
@@ -90,6 +95,13 @@ lab)
     install_missing "${base_packages[@]}" gnuplot-nox libtinygltf-dev nlohmann-json3-dev
     build release
     cmake --build --preset release --target lab
+    ;;
+cluster)
+    state="${2:-/tmp/raster-slurm}"
+    [[ "$state" = /* ]] || state="$caller_dir/$state"
+    install_missing "${cluster_packages[@]}"
+    tools/cluster/local-slurm.sh start "$state"
+    echo "# stop it with: tools/cluster/local-slurm.sh stop $state" >&2
     ;;
 bench)
     install_missing "${base_packages[@]}" gnuplot-nox libosmesa6-dev

@@ -555,11 +555,6 @@ std::vector<std::uint8_t> assemble_parts(std::vector<AnimationPart> parts) {
         MuxPointer mux = mux_of(part.bytes, "'" + printable(part.name) + "'");
         const std::optional<FrameRange> range = range_in(mux.get());
         if (!range) throw std::runtime_error("'" + printable(part.name) + "' is not a part: it has no frame range (render it with --frame-range)");
-        const int frames = std::max(1, frames_in(mux.get()));  // a one-frame part is a still
-        if (frames != range->count()) {
-            throw std::runtime_error("'" + printable(part.name) + "' holds " + std::to_string(frames) + " frames, but its range " +
-                                     frames_text(range->first, range->last) + " has " + std::to_string(range->count()));
-        }
         opened.push_back({&part, std::move(mux), *range});
     }
     std::sort(opened.begin(), opened.end(), [](const Opened& a, const Opened& b) { return a.range.first < b.range.first; });
@@ -583,17 +578,26 @@ std::vector<std::uint8_t> assemble_parts(std::vector<AnimationPart> parts) {
         }
         if (piece.range.first > next) throw std::runtime_error(in_no_part(next, piece.range.first - 1));
         if (piece.range.first < next) throw std::runtime_error(name + " repeats " + frames_text(piece.range.first, std::min(next - 1, piece.range.last)));
-        for (int k = 1; k <= piece.range.count(); ++k) {
+        if (piece.range.spacing_ms != spacing) {
+            throw std::runtime_error(name + " shows frames for " + std::to_string(piece.range.spacing_ms) + " ms, the others for " + std::to_string(spacing));
+        }
+        // libwebp's own encoder merges a repeated frame into the one before, lengthening it, so
+        // a part is checked by how long its frames last, not by how many it stores.
+        const int stored = std::max(1, frames_in(piece.mux.get()));  // a part of one stored frame is a still
+        const std::int64_t expected_ms = std::int64_t{piece.range.count()} * spacing;
+        std::int64_t lasts_ms = 0;
+        for (int k = 1; k <= stored; ++k) {
             WebPMuxFrameInfo frame{};
             if (WebPMuxGetFrame(piece.mux.get(), static_cast<std::uint32_t>(k), &frame) != WEBP_MUX_OK) throw std::runtime_error(name + " has a corrupt frame");
             const std::unique_ptr<WebPData, void (*)(WebPData*)> owned(&frame.bitstream, WebPDataClear);
-            if (frame.id != WEBP_CHUNK_ANMF) {  // a still: one frame lasting the range's spacing
+            if (frame.id != WEBP_CHUNK_ANMF) {  // a still: the whole range in one picture
                 frame.id = WEBP_CHUNK_ANMF;
-                frame.duration = piece.range.spacing_ms;
+                frame.duration = static_cast<int>(expected_ms);
             }
-            if (frame.duration != spacing || piece.range.spacing_ms != spacing) {
-                throw std::runtime_error(name + " shows frames for " + std::to_string(frame.duration) + " ms, the others for " + std::to_string(spacing));
+            if (frame.duration <= 0 || frame.duration % spacing != 0) {
+                throw std::runtime_error(name + " has a frame lasting " + std::to_string(frame.duration) + " ms, not a multiple of " + std::to_string(spacing));
             }
+            lasts_ms += frame.duration;
             if (k == 1) {
                 // A part's first frame must cover the canvas, since it will follow another part's last.
                 int fw = 0, fh = 0;
@@ -604,6 +608,10 @@ std::vector<std::uint8_t> assemble_parts(std::vector<AnimationPart> parts) {
                 frame.blend_method = WEBP_MUX_NO_BLEND;
             }
             if (WebPMuxPushFrame(whole.get(), &frame, 1) != WEBP_MUX_OK) throw std::runtime_error("cannot add " + name + "'s frames");
+        }
+        if (lasts_ms != expected_ms) {
+            throw std::runtime_error(name + " lasts " + std::to_string(lasts_ms) + " ms, but its range " + frames_text(piece.range.first, piece.range.last) +
+                                     " lasts " + std::to_string(expected_ms));
         }
         next = piece.range.last + 1;
     }
