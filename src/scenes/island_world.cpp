@@ -74,11 +74,11 @@ constexpr std::array<glm::dvec3, 14> kFlightPath{{
 }};
 
 glm::dvec3 on_path(double along) {
-    const auto n = static_cast<int>(kFlightPath.size());
+    constexpr auto n = static_cast<int>(kFlightPath.size());
     const double at = std::fmod(along, 1.0) * n;
     const int i = static_cast<int>(at);
     const double t = at - i;
-    const auto p = [n](int k) { return kFlightPath[static_cast<std::size_t>(((k % n) + n) % n)]; };
+    const auto p = [](int k) { return kFlightPath[static_cast<std::size_t>(((k % n) + n) % n)]; };
     const glm::dvec3 p0 = p(i - 1), p1 = p(i), p2 = p(i + 1), p3 = p(i + 2);
     return 0.5 * (2.0 * p1 + (p2 - p0) * t + (2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3) * t * t + (3.0 * p1 - p0 - 3.0 * p2 + p3) * t * t * t);
 }
