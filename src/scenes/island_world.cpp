@@ -4,6 +4,7 @@
 
 #include "scenes/island_parts.hpp"
 #include "scenes/painted_textures.hpp"
+#include "scenes/textured_object.hpp"
 
 #include <algorithm>
 #include <array>
@@ -48,14 +49,6 @@ constexpr std::array<View, 12> kViews{{
     {{"orbiting-plane", "the aeroplane circling above the islands"}, {-4, 34, 28}, {10, 30, 45}},
     {{"boat", "the boat sailing up the strait"}, {6, 5, 34}, {-2, 0.5F, 45}},
 }};
-
-PhongMaterial textured_material(float diffuse, float specular = 0.0F, std::optional<float> shininess = std::nullopt) {
-    return {LinearRgb{}, LinearRgb{diffuse, diffuse, diffuse}, LinearRgb{specular, specular, specular}, shininess};
-}
-
-SceneObject object(Mesh mesh, glm::mat4 model, std::shared_ptr<const Texture> texture, PhongMaterial material = textured_material(1.0F)) {
-    return {std::make_shared<const Mesh>(std::move(mesh)), model, material, ShadingMethod::phong, std::nullopt, std::move(texture), Sampler{}};
-}
 
 // A quad of water whose texture runs `along` repeats of the loop down its v, so it flows.
 Mesh flowing(const std::array<glm::vec3, 4>& corners, glm::vec3 inside, float tile, double along, int repeats) {
@@ -109,13 +102,13 @@ IslandWorld::IslandWorld() {
     const auto metal = corrugated();
 
     // The ocean, and both islands: a slab of sand with a lawn on top, the sand left as beaches.
-    fixed.push_back(object(textured_ground(800.0F, 800.0F, 4.0F), placed_at({0, -0.4F, 0}), waves(), textured_material(1.0F, 0.3F, 60.0F)));
-    fixed.push_back(object(textured_box({52, 1, 64}, 2.0F), placed_at({-40, -0.5F, 0}), sand));
-    fixed.push_back(object(textured_box({60, 1, 72}, 2.0F), placed_at({40, -0.5F, 0}), sand));
+    fixed.push_back(textured_object(textured_ground(800.0F, 800.0F, 4.0F), placed_at({0, -0.4F, 0}), waves(), textured_material(1.0F, 0.3F, 60.0F)));
+    fixed.push_back(textured_object(textured_box({52, 1, 64}, 2.0F), placed_at({-40, -0.5F, 0}), sand));
+    fixed.push_back(textured_object(textured_box({60, 1, 72}, 2.0F), placed_at({40, -0.5F, 0}), sand));
     Mesh lawns;
     append_posed(lawns, textured_ground(46.0F, 51.0F, 2.0F), placed_at({-40, 0.02F, 3.5F}));
     append_posed(lawns, textured_ground(54.0F, 62.0F, 2.0F), placed_at({40, 0.02F, 2}));
-    fixed.push_back(object(std::move(lawns), glm::mat4(1.0F), grass));
+    fixed.push_back(textured_object(std::move(lawns), glm::mat4(1.0F), grass));
 
     // The western island: a canyon of two rock walls, the cliff the river falls from, mountains.
     Mesh rocks, caps;
@@ -135,8 +128,8 @@ IslandWorld::IslandWorld() {
                          placed_at(peak.where + glm::vec3(0, peak.height * (1.0F - cap), 0), peak.yaw));
         }
     }
-    fixed.push_back(object(std::move(rocks), glm::mat4(1.0F), rock));
-    fixed.push_back(object(std::move(caps), glm::mat4(1.0F), snow));
+    fixed.push_back(textured_object(std::move(rocks), glm::mat4(1.0F), rock));
+    fixed.push_back(textured_object(std::move(caps), glm::mat4(1.0F), snow));
 
     // The house: brick walls, a tiled roof, a chimney, a door and windows on the side facing the strait.
     Mesh walls, roof, door, panes;
@@ -148,10 +141,10 @@ IslandWorld::IslandWorld() {
     for (const float x : {-2.0F, 2.0F}) {
         append_posed(panes, textured_quad({glm::vec3(x - 0.6F, 1.2F, 2.52F), glm::vec3(x + 0.6F, 1.2F, 2.52F), glm::vec3(x + 0.6F, 2.4F, 2.52F), glm::vec3(x - 0.6F, 2.4F, 2.52F)}, glm::vec3(0), 1.2F), house);
     }
-    fixed.push_back(object(std::move(walls), glm::mat4(1.0F), bricks()));
-    fixed.push_back(object(std::move(roof), glm::mat4(1.0F), tiles));
-    fixed.push_back(object(std::move(door), glm::mat4(1.0F), planks({90, 56, 30}, 16)));
-    fixed.push_back(object(std::move(panes), glm::mat4(1.0F), windows(), textured_material(1.0F, 0.6F, 80.0F)));
+    fixed.push_back(textured_object(std::move(walls), glm::mat4(1.0F), bricks()));
+    fixed.push_back(textured_object(std::move(roof), glm::mat4(1.0F), tiles));
+    fixed.push_back(textured_object(std::move(door), glm::mat4(1.0F), planks({90, 56, 30}, 16)));
+    fixed.push_back(textured_object(std::move(panes), glm::mat4(1.0F), windows(), textured_material(1.0F, 0.6F, 80.0F)));
 
     // The bridge across the strait: a deck on two pairs of piers, ramps down to either shore, rails.
     Mesh deck, timbers;
@@ -163,18 +156,18 @@ IslandWorld::IslandWorld() {
         for (const float side : {-1.6F, 1.6F}) append_posed(timbers, textured_box({0.8F, 4.0F, 0.8F}, 1.0F), placed_at({x, 1.1F, z + side}));
     }
     for (const float side : {-1.9F, 1.9F}) append_posed(timbers, textured_box({36, 0.5F, 0.15F}, 1.0F), placed_at({-2, 4.0F, z + side}));
-    fixed.push_back(object(std::move(deck), glm::mat4(1.0F), boards));
-    fixed.push_back(object(std::move(timbers), glm::mat4(1.0F), bark));
+    fixed.push_back(textured_object(std::move(deck), glm::mat4(1.0F), boards));
+    fixed.push_back(textured_object(std::move(timbers), glm::mat4(1.0F), bark));
 
     // The airport on the eastern island: a runway, a hangar with its door toward it.
-    fixed.push_back(object(textured_quad({glm::vec3(45, 0.04F, -30), glm::vec3(55, 0.04F, -30), glm::vec3(55, 0.04F, 30), glm::vec3(45, 0.04F, 30)}, glm::vec3(50, -1, 0), 10.0F),
+    fixed.push_back(textured_object(textured_quad({glm::vec3(45, 0.04F, -30), glm::vec3(55, 0.04F, -30), glm::vec3(55, 0.04F, 30), glm::vec3(45, 0.04F, 30)}, glm::vec3(50, -1, 0), 10.0F),
                            glm::mat4(1.0F), runway()));
     Mesh hangar;
     const glm::mat4 hangar_at = placed_at({26, 0, 18}, std::numbers::pi_v<float> / 2.0F);
     append_posed(hangar, textured_box({12, 6, 14}, 2.0F), hangar_at * placed_at({0, 3, 0}));
     append_posed(hangar, textured_prism(8, 6.0F, 13.8F, 2.0F), hangar_at * glm::scale(placed_at({0, 6, 0}), glm::vec3(1, 0.45F, 1)));
-    fixed.push_back(object(std::move(hangar), glm::mat4(1.0F), metal, textured_material(1.0F, 0.4F, 30.0F)));
-    fixed.push_back(object(textured_quad({glm::vec3(-4, 0, 7.02F), glm::vec3(4, 0, 7.02F), glm::vec3(4, 5, 7.02F), glm::vec3(-4, 5, 7.02F)}, glm::vec3(0), 2.0F),
+    fixed.push_back(textured_object(std::move(hangar), glm::mat4(1.0F), metal, textured_material(1.0F, 0.4F, 30.0F)));
+    fixed.push_back(textured_object(textured_quad({glm::vec3(-4, 0, 7.02F), glm::vec3(4, 0, 7.02F), glm::vec3(4, 5, 7.02F), glm::vec3(-4, 5, 7.02F)}, glm::vec3(0), 2.0F),
                            hangar_at, speckled({58, 60, 66}, 0.1F, 10)));
 
     // Trees: firs below the western mountains and on the eastern island, oaks by the house and
@@ -191,22 +184,22 @@ IslandWorld::IslandWorld() {
                                  glm::vec4(64, 0, -31, 2.9F), glm::vec4(66, 0, 14, 1.8F), glm::vec4(14, 0, 30, -1.2F)}) {
         add_palm(trees, glm::vec3(palm), palm.w);
     }
-    fixed.push_back(object(std::move(trees.trunks), glm::mat4(1.0F), bark));
-    fixed.push_back(object(std::move(trees.needles), glm::mat4(1.0F), fir_needles));
-    fixed.push_back(object(std::move(trees.leaves), glm::mat4(1.0F), oak_leaves));
+    fixed.push_back(textured_object(std::move(trees.trunks), glm::mat4(1.0F), bark));
+    fixed.push_back(textured_object(std::move(trees.needles), glm::mat4(1.0F), fir_needles));
+    fixed.push_back(textured_object(std::move(trees.leaves), glm::mat4(1.0F), oak_leaves));
 
     // What moves: the aeroplanes and their propeller, the boat, and the water.
-    parts->plane = object(aeroplane(), glm::mat4(1.0F), livery(), textured_material(1.0F, 0.5F, 40.0F));
-    parts->propeller = object(propeller(), glm::mat4(1.0F), speckled({40, 40, 44}, 0.1F, 16));
+    parts->plane = textured_object(aeroplane(), glm::mat4(1.0F), livery(), textured_material(1.0F, 0.5F, 40.0F));
+    parts->propeller = textured_object(propeller(), glm::mat4(1.0F), speckled({40, 40, 44}, 0.1F, 16));
     Mesh hull;
     append_posed(hull, textured_box({2.4F, 1.2F, 6.0F}, 1.0F), placed_at({0, 0.2F, 0}));
     append_posed(hull, textured_pyramid(2.4F, 1.2F, 1.8F, 1.0F), glm::rotate(placed_at({0, 0.2F, 3.0F}), std::numbers::pi_v<float> / 2.0F, glm::vec3(1, 0, 0)));
-    parts->hull = object(std::move(hull), glm::mat4(1.0F), planks({140, 92, 52}, 8));
+    parts->hull = textured_object(std::move(hull), glm::mat4(1.0F), planks({140, 92, 52}, 8));
     Mesh cabin;
     append_posed(cabin, textured_box({1.8F, 1.1F, 2.2F}, 1.0F), placed_at({0, 1.35F, -0.8F}));
     append_posed(cabin, textured_box({0.12F, 1.0F, 0.12F}, 1.0F), placed_at({0, 2.4F, 0.6F}));  // clears the bridge deck at 3.1 m
-    parts->cabin = object(std::move(cabin), glm::mat4(1.0F), sail());
-    parts->water = object(Mesh{}, glm::mat4(1.0F), streaks(), textured_material(1.0F, 0.3F, 60.0F));
+    parts->cabin = textured_object(std::move(cabin), glm::mat4(1.0F), sail());
+    parts->water = textured_object(Mesh{}, glm::mat4(1.0F), streaks(), textured_material(1.0F, 0.3F, 60.0F));
     parts_ = std::move(parts);
 }
 

@@ -5,6 +5,7 @@
 #include <raster/shade/texture.hpp>
 
 #include "scenes/painted_textures.hpp"
+#include "scenes/textured_object.hpp"
 
 #include <algorithm>
 #include <array>
@@ -27,14 +28,6 @@ constexpr std::array<SeedSceneInfo, 3> kSeedScenes{{
     {"flythrough", "raster-engine", "a first-person flight over a textured island (the early sketch)", 400},
     {"islands", "raster-engine", "its whole world: two islands, canyon, waterfall, airport, planes, boat", 600},
 }};
-
-PhongMaterial textured_material(float diffuse, float specular = 0.0F, std::optional<float> shininess = std::nullopt) {
-    return {LinearRgb{}, LinearRgb{diffuse, diffuse, diffuse}, LinearRgb{specular, specular, specular}, shininess};
-}
-
-SceneObject placed(Mesh mesh, glm::mat4 model, std::shared_ptr<const Texture> texture, PhongMaterial material = textured_material(1.0F)) {
-    return {std::make_shared<const Mesh>(std::move(mesh)), model, material, ShadingMethod::phong, std::nullopt, std::move(texture), Sampler{}};
-}
 
 glm::mat4 at(glm::vec3 where, float yaw = 0.0F) {
     return glm::rotate(glm::translate(glm::mat4(1.0F), where), yaw, glm::vec3(0, 1, 0));
@@ -59,28 +52,28 @@ SeedScene::SeedScene(std::string_view name) : info_(nullptr) {
     }
     if (info_->name == "ptah") {
         // Ptah's diffuse-only light: 1.5 max(0, n.l) times the texture.
-        moving_ = placed(torus_knot(2, 3, 0.38F, 360, 32, 30.0F), glm::mat4(1.0F), scales(), textured_material(1.5F));
+        moving_ = textured_object(torus_knot(2, 3, 0.38F, 360, 32, 30.0F), glm::mat4(1.0F), scales(), textured_material(1.5F));
         return;
     }
     const auto grass = speckled({74, 138, 52}, 0.18F, 1), sand = speckled({212, 192, 140}, 0.1F, 2), rock = speckled({124, 122, 116}, 0.25F, 3);
     const auto leaves = speckled({44, 112, 44}, 0.3F, 4), bark = planks({104, 72, 42}, 16), roof = planks({122, 44, 32}, 8);
-    fixed_.push_back(placed(textured_ground(240.0F, 240.0F, 4.0F), at({0, -0.4F, 0}), waves(), textured_material(1.0F, 0.3F, 60.0F)));
-    fixed_.push_back(placed(textured_box({30, 1, 30}, 2.0F), at({0, -0.5F, 0}), sand));
-    fixed_.push_back(placed(textured_ground(26.0F, 26.0F, 2.0F), at({0, 0.01F, 0}), grass));
-    fixed_.push_back(placed(textured_box({4, 3, 3}, 2.0F), at({-5, 1.5F, 3}, 0.3F), bricks()));
-    fixed_.push_back(placed(textured_pyramid(4.8F, 3.8F, 2.0F, 1.0F), at({-5, 3.0F, 3}, 0.3F), roof));
+    fixed_.push_back(textured_object(textured_ground(240.0F, 240.0F, 4.0F), at({0, -0.4F, 0}), waves(), textured_material(1.0F, 0.3F, 60.0F)));
+    fixed_.push_back(textured_object(textured_box({30, 1, 30}, 2.0F), at({0, -0.5F, 0}), sand));
+    fixed_.push_back(textured_object(textured_ground(26.0F, 26.0F, 2.0F), at({0, 0.01F, 0}), grass));
+    fixed_.push_back(textured_object(textured_box({4, 3, 3}, 2.0F), at({-5, 1.5F, 3}, 0.3F), bricks()));
+    fixed_.push_back(textured_object(textured_pyramid(4.8F, 3.8F, 2.0F, 1.0F), at({-5, 3.0F, 3}, 0.3F), roof));
     for (const glm::vec3 tree : {glm::vec3(4, 0, -4), glm::vec3(6.5F, 0, 2), glm::vec3(-2, 0, -7), glm::vec3(1, 0, 8)}) {
-        fixed_.push_back(placed(textured_box({0.4F, 2.0F, 0.4F}, 1.0F), at(tree + glm::vec3(0, 1, 0)), bark));
-        fixed_.push_back(placed(textured_pyramid(2.4F, 2.4F, 3.2F, 1.0F), at(tree + glm::vec3(0, 1.4F, 0), 0.4F), leaves));
+        fixed_.push_back(textured_object(textured_box({0.4F, 2.0F, 0.4F}, 1.0F), at(tree + glm::vec3(0, 1, 0)), bark));
+        fixed_.push_back(textured_object(textured_pyramid(2.4F, 2.4F, 3.2F, 1.0F), at(tree + glm::vec3(0, 1.4F, 0), 0.4F), leaves));
     }
-    fixed_.push_back(placed(textured_pyramid(9.0F, 9.0F, 6.5F, 2.0F), at({-8, 0, -7}, 0.2F), rock));
-    fixed_.push_back(placed(textured_pyramid(6.0F, 6.0F, 4.0F, 2.0F), at({9, 0, 9}, -0.3F), rock));
-    fixed_.push_back(placed(textured_box({2.0F, 1.5F, 3.0F}, 1.0F), at({9, 0.75F, -8}, 0.7F), rock));
-    fixed_.push_back(placed(textured_box({1.2F, 0.9F, 1.4F}, 1.0F), at({7.5F, 0.45F, -5.5F}, 0.2F), rock));
+    fixed_.push_back(textured_object(textured_pyramid(9.0F, 9.0F, 6.5F, 2.0F), at({-8, 0, -7}, 0.2F), rock));
+    fixed_.push_back(textured_object(textured_pyramid(6.0F, 6.0F, 4.0F, 2.0F), at({9, 0, 9}, -0.3F), rock));
+    fixed_.push_back(textured_object(textured_box({2.0F, 1.5F, 3.0F}, 1.0F), at({9, 0.75F, -8}, 0.7F), rock));
+    fixed_.push_back(textured_object(textured_box({1.2F, 0.9F, 1.4F}, 1.0F), at({7.5F, 0.45F, -5.5F}, 0.2F), rock));
     // The boat: a hull and a sail, one mesh so that they move together.
     Mesh boat = textured_box({1.2F, 0.8F, 3.2F}, 1.0F);
-    moving_ = placed(std::move(boat), glm::mat4(1.0F), planks({140, 92, 52}, 8));
-    fixed_.push_back(placed(textured_pyramid(0.12F, 2.2F, 2.6F, 2.6F), glm::mat4(1.0F), sail()));
+    moving_ = textured_object(std::move(boat), glm::mat4(1.0F), planks({140, 92, 52}, 8));
+    fixed_.push_back(textured_object(textured_pyramid(0.12F, 2.2F, 2.6F, 2.6F), glm::mat4(1.0F), sail()));
 }
 
 PerspectiveScene SeedScene::frame(int width, int height, int index, int count) const {
