@@ -301,6 +301,11 @@ void preview(const CLI::App& app, const ExportOptions& options, const raster::Fr
 }
 
 void deliver(const ExportOptions& options, std::span<const std::uint8_t> bytes) {
+    if (options.held != nullptr) {
+        options.held->push_back({options, {bytes.begin(), bytes.end()}});
+        options.held->back().options.held = nullptr;
+        return;
+    }
     if (options.output != "-") {
         raster::write_output_file(options.output, bytes, options.policy, options.inputs);
         return;

@@ -34,6 +34,9 @@ struct ExportOptions {
     int threads = 0;  // for rendering bands and encoding frames; 0: one per core
     int samples = 1;  // per pixel, for anti-aliasing (--samples); 0 until a program's default is known
     std::vector<raster::InputRecord> inputs;  // every file read: no output may replace one
+    // When set, deliver() keeps the picture here instead of writing it: a batch writes a picture
+    // that would replace an existing file only after every model has been read.
+    std::vector<struct HeldPicture>* held = nullptr;
     std::optional<ImageFormat> format;  // default: PNG for a name ending in .png, else WebP
     std::string frames_dir;  // an animation written as numbered PNG frames into this directory
     std::string frame_range;  // --frame-range A..B: only those frames of the clip, as a marked part
@@ -48,6 +51,12 @@ struct ExportOptions {
     // asked for is capped there, and 0 takes one per such core.
     [[nodiscard]] int threads_in_use() const;
     [[nodiscard]] raster::RenderOptions render_options() const { return {threads_in_use(), samples}; }
+};
+
+// A picture deliver() kept for later, with where it goes.
+struct HeldPicture {
+    ExportOptions options;
+    std::vector<std::uint8_t> bytes;
 };
 
 // A CLI11 app whose help is wrapped to 80 columns and whose --version names the program.

@@ -10,16 +10,20 @@
 #include <cctype>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <deque>
 #include <filesystem>
 #include <functional>
 #include <future>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <numbers>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace {
@@ -155,6 +159,25 @@ bool looks_like_a_model(const std::string& name) {
     return false;
 }
 
+// Bytes from "512M", "2G", "2.5GiB", "1048576" (K, M, G, T are powers of 1024); nothing for other text.
+std::optional<std::uint64_t> memory_size(const std::string& text) {
+    char* end = nullptr;
+    const double number = std::strtod(text.c_str(), &end);
+    std::string unit(end);
+    for (char& c : unit) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    if (unit.ends_with("IB")) unit.resize(unit.size() - 2);
+    if (unit.ends_with("B")) unit.pop_back();
+    static constexpr std::string_view kUnits = "KMGT";
+    double bytes = number;
+    if (unit.size() == 1 && kUnits.find(unit[0]) != std::string_view::npos) {
+        bytes = std::ldexp(number, 10 * static_cast<int>(kUnits.find(unit[0]) + 1));
+    } else if (!unit.empty()) {
+        return std::nullopt;
+    }
+    if (end == text.c_str() || !std::isfinite(bytes) || bytes < 1.0 || bytes > 0x1p62) return std::nullopt;
+    return static_cast<std::uint64_t>(bytes);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -246,6 +269,16 @@ int main(int argc, char** argv) {
                    "Normals the model lacks are smoothed across edges gentler than this angle and creased at sharper ones; 0 makes every facet flat [60]")
         ->check(finite_number(0.0, 180.0, false, " degrees"))
         ->option_text("DEGREES");
+    std::string max_memory;
+    app.add_option("--max-memory", max_memory,
+                   "Memory one model's reading may take, as 512M, 2G or 2.5GiB: each model is read in a process of its own, and one "
+                   "that needs more is refused in one line and the batch goes on [half the physical memory]")
+        ->check(CLI::Validator([](std::string& text) { return memory_size(text) ? "" : "'" + raster::printable(text, 40) + "' is not a size like 512M or 2G"; }, ""))
+        ->option_text("SIZE");
+    app.add_option("--max-seconds", plan.obj.limits.max_seconds,
+                   "Processor and wall-clock seconds one model's reading may take before it is stopped and refused [120]")
+        ->check(finite_number(0.0, 1e6, true, " seconds"))
+        ->option_text("SECONDS");
     std::string confine;
     app.add_option("--confine", confine,
                    "Read nothing outside DIR (after resolving .. and symbolic links): the model must lie inside it, and "
@@ -263,6 +296,7 @@ int main(int argc, char** argv) {
             view.background = colour_from_hex(background);
         }
         if (!confine.empty()) plan.obj.confine = raster::confinement_root(confine);
+        if (!max_memory.empty()) plan.obj.limits.max_memory = *memory_size(max_memory);
         if (!options.frames_dir.empty() && plan.frames == 0) {
             throw CLI::ValidationError("--frames-dir writes the frames of a turntable; add --turntable N");
         }
@@ -347,14 +381,31 @@ int main(int argc, char** argv) {
         std::vector<raster::InputRecord> every_input;
         std::vector<raster::FileIdentity> pictures;  // written so far
         std::size_t failed_writes = 0;
+        // A file already at a picture's place may be what a later model reads: such pictures wait
+        // until every model has been read (README: Rendering models you did not make).
+        std::vector<HeldPicture> held;
+        std::map<std::string, std::string> held_reports;  // by output
+        std::vector<bool> existed(jobs.size());
+        for (std::size_t i = 0; i < jobs.size(); ++i) {
+            std::error_code missing;
+            existed[i] = std::filesystem::exists(std::filesystem::symlink_status(jobs[i].output, missing));
+        }
+        const auto hold_if_existed = [&](const BatchJob& job, ExportOptions& one) {
+            if (existed[static_cast<std::size_t>(&job - jobs.data())]) one.held = &held;
+        };
         const auto write_encoded = [&] {
             for (Encoding& done : encoded) {
                 try {
                     const FinishedPicture picture = done.picture.get();
                     done.options.inputs = every_input;
                     if (!picture.written) deliver(done.options, picture.bytes);
-                    if (raster::FileIdentity identity; raster::identity_of(done.options.output, identity)) pictures.push_back(identity);
-                    if (!options.quiet) std::cout << picture.report << '\n' << std::flush;
+                    raster::FileIdentity identity;  // a held picture is not written yet: the file there is not ours
+                    if (done.options.held == nullptr && raster::identity_of(done.options.output, identity)) pictures.push_back(identity);
+                    if (done.options.held != nullptr) {
+                        held_reports[done.options.output] = picture.report;  // said once it is written
+                    } else if (!options.quiet) {
+                        std::cout << picture.report << '\n' << std::flush;
+                    }
                 } catch (const std::exception& problem) {
                     report_failure(*done.job, problem.what());
                     ++failed_writes;
@@ -369,6 +420,7 @@ int main(int argc, char** argv) {
                 ExportOptions one = options;
                 one.output = job.output.string();
                 one.show_progress = false;
+                hold_if_existed(job, one);
                 std::function<FinishedPicture()> finish = render_model(app, one, loaded, plan, renderer);
                 while (encoding.size() >= in_flight) {  // wait for the oldest; it is written between reads
                     encoding.front().picture.wait();
@@ -391,6 +443,17 @@ int main(int argc, char** argv) {
             report_failure);
         for (Encoding& last : encoding) encoded.push_back(std::move(last));
         write_encoded();
+        for (HeldPicture& picture : held) {  // every model has been read: what each read is known
+            picture.options.inputs = every_input;
+            const auto job = std::find_if(jobs.begin(), jobs.end(), [&](const BatchJob& j) { return j.output.string() == picture.options.output; });
+            try {
+                deliver(picture.options, picture.bytes);
+                if (!options.quiet) std::cout << held_reports[picture.options.output] << '\n' << std::flush;
+            } catch (const std::exception& problem) {
+                report_failure(*job, problem.what());
+                ++failed_writes;
+            }
+        }
         const std::size_t written = drawn - failed_writes;
         const double seconds = seconds_since(start);
         const std::string summary = std::to_string(written) + " of " + std::to_string(jobs.size()) + " models into " +

@@ -130,7 +130,8 @@ std::int64_t checked(int index, std::size_t count, const char* what, std::size_t
 
 // Positions and normals mirrored into raster's left-handed world; each face split into exactly
 // its own area and every piece re-wound to match.
-detail::PolygonSoup soup_from(const tinyobj::attrib_t& attrib, const std::vector<tinyobj::shape_t>& shapes, std::size_t& skipped) {
+detail::PolygonSoup soup_from(const tinyobj::attrib_t& attrib, const std::vector<tinyobj::shape_t>& shapes,
+                              const detail::ObjSurvey& survey, std::size_t& skipped) {
     detail::PolygonSoup soup;
     for (std::size_t i = 0; i + 2 < attrib.vertices.size(); i += 3) {
         soup.positions.emplace_back(attrib.vertices[i], attrib.vertices[i + 1], -attrib.vertices[i + 2]);
@@ -140,12 +141,14 @@ detail::PolygonSoup soup_from(const tinyobj::attrib_t& attrib, const std::vector
     }
     for (std::size_t i = 0; i + 1 < attrib.texcoords.size(); i += 2) soup.uvs.emplace_back(attrib.texcoords[i], attrib.texcoords[i + 1]);
     std::size_t face = 0;
+    auto large = survey.large_faces.begin();
     std::vector<detail::SoupCorner> corners;
     std::vector<glm::dvec3> outline;
     for (const tinyobj::shape_t& shape : shapes) {
         std::size_t next = 0;
         for (std::size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f, ++face) {
-            const std::size_t count = shape.mesh.num_face_vertices[f];
+            std::size_t count = shape.mesh.num_face_vertices[f];
+            if (large != survey.large_faces.end() && large->first == face) count = (large++)->second;  // the survey counted them whole
             const std::size_t first = next;
             next += count;
             if (next > shape.mesh.indices.size()) throw BadModel("face " + std::to_string(face + 1) + " is cut short");
@@ -173,6 +176,7 @@ detail::PolygonSoup soup_from(const tinyobj::attrib_t& attrib, const std::vector
                 soup.triangles.push_back({{corners[a], corners[c], corners[b]}, material});
             }
         }
+        if (next != shape.mesh.indices.size()) throw BadModel("its faces and their corners do not line up");
     }
     return soup;
 }
@@ -258,7 +262,7 @@ Model model_from(std::istream& obj, const std::string& name, const detail::ObjSu
     model.sources = std::move(libraries.sources());
     std::size_t skipped = survey.skipped_faces;
     std::size_t dropped_again = 0;
-    const detail::PolygonSoup soup = soup_from(attrib, shapes, dropped_again);
+    const detail::PolygonSoup soup = soup_from(attrib, shapes, survey, dropped_again);
     skipped = std::max(skipped, dropped_again);
     if (skipped > 0) model.warnings.push_back(name + ": skipped " + std::to_string(skipped) + " faces with fewer than 3 corners");
     std::map<std::filesystem::path, std::shared_ptr<const Texture>> loaded;  // by canonical path: each file read once

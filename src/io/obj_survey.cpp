@@ -127,6 +127,8 @@ ObjSurvey survey_obj(const std::string& name, std::size_t max_corners,
                 throw std::runtime_error(at + "a face of more than " + std::to_string(max_corners) + " corners");
             }
             if (words.size() < 4) ++survey.skipped_faces;
+            if (words.size() - 1 >= 256) survey.large_faces.emplace_back(survey.faces, words.size() - 1);
+            if (words.size() >= 4) ++survey.faces;
             for (std::size_t w = 1; w < words.size(); ++w) {
                 const std::string_view corner = words[w];
                 std::array<std::string_view, 3> fields{};

@@ -6,6 +6,7 @@
 #include <string>
 #include <string_view>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 // The first of two readings of an OBJ file: every line checked in raster's own words before
@@ -26,6 +27,10 @@ struct ObjSurvey {
     std::vector<NamedAt> materials;     // usemtl names in order of first use
     std::array<std::size_t, 3> defined{};  // v, vt and vn statements, as tinyobjloader counts them
     std::size_t skipped_faces = 0;      // faces of fewer than 3 corners
+    // Faces of 256 corners or more, as (index among faces of 3 or more, corners): tinyobjloader
+    // keeps a face's corner count in one byte, so these are the counts it gets wrong.
+    std::vector<std::pair<std::size_t, std::size_t>> large_faces;
+    std::size_t faces = 0;  // of 3 corners or more
 };
 
 // Checks one OBJ text line by line (`lines` calls its visitor with each line and its number):

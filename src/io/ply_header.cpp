@@ -21,18 +21,6 @@ bool is_count(std::string_view word) {
     return !word.empty() && error == std::errc() && end == word.data() + word.size();
 }
 
-std::vector<std::string_view> words_of(std::string_view line) {
-    std::vector<std::string_view> words;
-    std::size_t at = 0;
-    while (true) {
-        at = line.find_first_not_of(" \t", at);
-        if (at == std::string_view::npos) return words;
-        const std::size_t end = std::min(line.find_first_of(" \t", at), line.size());
-        words.push_back(line.substr(at, end - at));
-        at = end;
-    }
-}
-
 // "" when one header line is well formed, else what is wrong with it.
 std::string line_problem(const std::vector<std::string_view>& words, int number, bool& format_seen, bool& element_seen) {
     const std::string_view key = words.empty() ? std::string_view() : words[0];
@@ -58,6 +46,18 @@ std::string line_problem(const std::vector<std::string_view>& words, int number,
 
 }  // namespace
 
+std::vector<std::string_view> ply_words(std::string_view line) {
+    std::vector<std::string_view> words;
+    std::size_t at = 0;
+    while (true) {
+        at = line.find_first_not_of(" \t", at);
+        if (at == std::string_view::npos) return words;
+        const std::size_t end = std::min(line.find_first_of(" \t", at), line.size());
+        words.push_back(line.substr(at, end - at));
+        at = end;
+    }
+}
+
 std::string ply_header_problem(std::span<const std::uint8_t> bytes) {
     const std::string_view text(reinterpret_cast<const char*>(bytes.data()), std::min(bytes.size(), kMaxPlyHeaderBytes));
     bool format_seen = false, element_seen = false;
@@ -69,7 +69,7 @@ std::string ply_header_problem(std::span<const std::uint8_t> bytes) {
         if (line.ends_with('\r')) line.remove_suffix(1);
         start = newline + 1;
         ++number;
-        const std::vector<std::string_view> words = words_of(line);
+        const std::vector<std::string_view> words = ply_words(line);
         if (words.size() == 1 && words[0] == "end_header" && number > 1) {
             return format_seen ? "" : "the PLY header ends before its format line";
         }

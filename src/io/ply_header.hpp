@@ -3,6 +3,8 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <string_view>
+#include <vector>
 
 // PLY headers read by raster before assimp sees them: assimp 5.2.5 loops forever on a header
 // without its end_header line, so only a header of known words reaches it.
@@ -15,5 +17,14 @@ inline constexpr std::size_t kMaxPlyHeaderBytes = 64 * 1024;
 // kMaxPlyHeaderBytes, and whose element and property lines name decimal counts and known
 // types; else why not, with its line. Other lines are skipped, as assimp skips them.
 [[nodiscard]] std::string ply_header_problem(std::span<const std::uint8_t> bytes);
+
+// The words of one header line, split at spaces and tabs.
+[[nodiscard]] std::vector<std::string_view> ply_words(std::string_view line);
+
+// "" when every element the header declares, and every list in it, fits in the bytes after the
+// header (a binary body walked byte by byte, an ASCII one line by line); else the first that
+// does not, before a reader allocates what a few hundred bytes claim. Call after
+// ply_header_problem passed.
+[[nodiscard]] std::string ply_counts_problem(std::span<const std::uint8_t> bytes);
 
 }  // namespace raster::detail

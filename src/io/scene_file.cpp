@@ -3,6 +3,7 @@
 
 #include "io/model_builder.hpp"
 #include "io/named_path.hpp"
+#include "io/gltf_structure.hpp"
 #include "io/ply_header.hpp"
 #include "geometry/polygon_triangles.hpp"
 
@@ -14,11 +15,15 @@
 #include <cctype>
 #include <cmath>
 #include <map>
+#include <optional>
+#include <span>
+#include <string_view>
 #include <memory>
 #include <stdexcept>
 #include <string>
 #include <unordered_set>
 #include <vector>
+#include <assimp/BaseImporter.h>
 #include <assimp/IOSystem.hpp>
 #include <assimp/Importer.hpp>
 #include <assimp/MemoryIOWrapper.h>
@@ -37,13 +42,57 @@ namespace {
 // The deepest node hierarchy followed: a file may nest nodes, but not without end.
 constexpr int kMaxNodeDepth = 256;
 
+// The checks a model file passes before assimp parses it, on every open: assimp opens some
+// files twice, and a check made only the first time is no check.
+std::string structure_problem(std::span<const std::uint8_t> bytes, const std::string& extension, const std::filesystem::path& directory,
+                              const ObjOptions& options) {
+    if (extension == ".ply") {
+        if (std::string problem = detail::ply_header_problem(bytes); !problem.empty()) return problem;
+        return detail::ply_counts_problem(bytes);
+    }
+    if (extension != ".gltf" && extension != ".glb") return "";
+    return detail::gltf_structure_problem(bytes, extension == ".glb", [&](std::string_view uri) -> std::optional<std::uint64_t> {
+        try {
+            std::error_code error;
+            const std::filesystem::path file = detail::resolve_named_path(directory, std::string(uri), options.confine);
+            // Outside the confinement a size would tell an uploader something: its reader refuses it instead.
+            if (!options.confine.empty() && std::filesystem::weakly_canonical(file, error).lexically_relative(options.confine).string().starts_with("..")) return std::nullopt;
+            const std::uintmax_t size = std::filesystem::file_size(file, error);
+            return error ? std::nullopt : std::optional<std::uint64_t>(size);
+        } catch (const std::runtime_error&) {
+            return std::nullopt;
+        }
+    });
+}
+
+// A stream over bytes in memory that leaves `open` when deleted, whoever deletes it.
+class TrackedStream final : public Assimp::MemoryIOStream {
+public:
+    TrackedStream(const std::uint8_t* data, std::size_t size, std::unordered_set<TrackedStream*>& open)
+        : Assimp::MemoryIOStream(data, size, false), open_(open) {}
+    ~TrackedStream() override { open_.erase(this); }
+    TrackedStream(const TrackedStream&) = delete;
+    TrackedStream& operator=(const TrackedStream&) = delete;
+
+private:
+    std::unordered_set<TrackedStream*>& open_;
+};
+
 // Every file assimp opens (the model, glTF buffers and images) goes through InputFile: regular
 // files only, sizes capped, confinement kept, each one remembered as an input of the run.
 class BoundedFiles final : public Assimp::IOSystem {
 public:
-    // `ply`: the model is read as PLY, so its header is checked before assimp parses it.
-    BoundedFiles(const ObjOptions& options, std::vector<InputRecord>& sources, bool ply = false)
-        : options_(options), sources_(sources), ply_(ply) {}
+    // `model`: the file whose structure is checked whenever it is opened; `extension` its format.
+    BoundedFiles(const ObjOptions& options, std::vector<InputRecord>& sources, std::filesystem::path model = {}, std::string extension = {})
+        : options_(options), sources_(sources), model_(std::move(model)), extension_(std::move(extension)) {
+        has_model_ = !model_.empty() && identity_of(model_, model_identity_);
+    }
+    ~BoundedFiles() override {
+        // assimp deletes most streams itself, but not one it was reading when it threw.
+        for (TrackedStream* stream : std::unordered_set<TrackedStream*>(open_)) delete stream;
+    }
+    BoundedFiles(const BoundedFiles&) = delete;
+    BoundedFiles& operator=(const BoundedFiles&) = delete;
 
     bool Exists(const char* file) const override {
         FileIdentity identity;
@@ -54,19 +103,31 @@ public:
     Assimp::IOStream* Open(const char* file, const char* mode) override {
         if (std::string(mode).find_first_of("wa+") != std::string::npos) return nullptr;  // reading only
         InputRules rules;
-        rules.role = sources_.empty() ? "model" : "model buffer";
+        FileIdentity identity;
+        const bool exists = identity_of(file, identity);
+        const bool is_model = has_model_ && exists && identity == model_identity_;
+        rules.role = is_model || sources_.empty() ? "model" : "model buffer";
         rules.max_bytes = kMaxModelFileBytes;
         rules.confine = options_.confine;
         try {
-            if (FileIdentity identity; identity_of(file, identity)) sources_.push_back({file, identity, rules.role});
-            auto bytes = std::make_unique<std::vector<std::uint8_t>>(read_input_file(file, rules));
-            if (ply_ && rules.role == "model") {
-                if (std::string problem = detail::ply_header_problem(*bytes); !problem.empty()) throw std::runtime_error(problem);
+            if (exists && !is_model) sources_.push_back({file, identity, rules.role});
+            if (is_model && !model_recorded_) {
+                sources_.push_back({file, identity, rules.role});
+                model_recorded_ = true;
             }
-            const std::uint8_t* data = bytes->data();
+            auto bytes = std::make_unique<std::vector<std::uint8_t>>(read_input_file(file, rules));
+            if (is_model) {
+                if (std::string problem = structure_problem(*bytes, extension_, model_.parent_path(), options_); !problem.empty()) {
+                    throw std::runtime_error(problem);
+                }
+            }
+            // An empty file still gets a real address: assimp copies from it.
+            const std::uint8_t* data = bytes->empty() ? &kNoByte : bytes->data();
             const std::size_t size = bytes->size();
             buffers_.push_back(std::move(bytes));
-            return new Assimp::MemoryIOStream(data, size, false);
+            auto* stream = new TrackedStream(data, size, open_);
+            open_.insert(stream);
+            return stream;
         } catch (const std::runtime_error& problem) {
             if (first_failure_.empty()) {
                 first_failure_ = "'" + printable(file) + "' " + problem.what();
@@ -83,13 +144,40 @@ public:
     [[nodiscard]] const std::string& first_reason() const noexcept { return first_reason_; }
 
 private:
+    static constexpr std::uint8_t kNoByte = 0;
     const ObjOptions& options_;
     std::vector<InputRecord>& sources_;
+    std::filesystem::path model_;
+    std::string extension_;
+    FileIdentity model_identity_;
+    bool has_model_ = false;
+    bool model_recorded_ = false;
     std::vector<std::unique_ptr<std::vector<std::uint8_t>>> buffers_;
+    std::unordered_set<TrackedStream*> open_;
     std::string first_failure_;
     std::string first_reason_;
-    bool ply_;
 };
+
+// Leaves `importer` only the reader of one format: when it declines a file, assimp would
+// otherwise offer it to every reader it has (3DS, FBX, Collada, ...). Returns those taken out,
+// which the caller now owns.
+std::vector<std::unique_ptr<Assimp::BaseImporter>> keep_only_reader(Assimp::Importer& importer, const std::string& extension) {
+    const std::string wanted = extension == ".glb" ? "glb" : extension.substr(1);
+    std::vector<Assimp::BaseImporter*> others;
+    for (std::size_t i = 0; i < importer.GetImporterCount(); ++i) {
+        const aiImporterDesc* about = importer.GetImporterInfo(i);
+        const std::string name = about != nullptr && about->mName != nullptr ? about->mName : "";
+        const std::string endings = about != nullptr && about->mFileExtensions != nullptr ? " " + std::string(about->mFileExtensions) + " " : "";
+        const bool gltf2 = name.find("glTF2") != std::string::npos;
+        const bool keep = endings.find(" " + wanted + " ") != std::string::npos && (wanted.starts_with("gl") ? gltf2 : true);
+        if (!keep) others.push_back(importer.GetImporter(i));
+    }
+    std::vector<std::unique_ptr<Assimp::BaseImporter>> removed;
+    for (Assimp::BaseImporter* other : others) {
+        if (importer.UnregisterLoader(other) == AI_SUCCESS) removed.emplace_back(other);
+    }
+    return removed;
+}
 
 glm::dmat4 matrix_of(const aiMatrix4x4& m) {
     // assimp's matrices are row-major with translation in the last column; GLM's are column-major.
@@ -298,10 +386,12 @@ constexpr const char* kUnreadable = "not a glTF 2.0, STL or PLY model raster can
 Model read_scene_file(const std::filesystem::path& path, const ObjOptions& options) {
     const std::string name = printable(path.string());
     Model model;
-    Assimp::Importer importer;
     std::string extension = path.extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    auto* files = new BoundedFiles(options, model.sources, extension == ".ply");  // the importer owns it
+    std::vector<std::unique_ptr<Assimp::BaseImporter>> removed;  // outlives the importer that gave them up
+    Assimp::Importer importer;
+    removed = keep_only_reader(importer, extension);
+    auto* files = new BoundedFiles(options, model.sources, path, extension);  // the importer owns it
     importer.SetIOHandler(files);
     if (FileIdentity identity; !identity_of(path, identity)) {
         // assimp would stop at its own existence check, giving no reason: InputFile gives one.
@@ -325,11 +415,11 @@ Model parse_scene_file(std::span<const std::uint8_t> bytes, const std::string& f
     ObjOptions no_files = options;
     no_files.load_textures = false;
     no_files.confine = "/nonexistent-raster-memory-only";  // a buffer or image the text names is never opened
+    std::vector<std::unique_ptr<Assimp::BaseImporter>> removed;
     Assimp::Importer importer;
+    removed = keep_only_reader(importer, "." + format);
     importer.SetIOHandler(new BoundedFiles(no_files, model.sources));
-    if (format == "ply") {
-        if (std::string problem = detail::ply_header_problem(bytes); !problem.empty()) throw std::runtime_error(name + ": " + problem);
-    }
+    if (std::string problem = structure_problem(bytes, "." + format, "", no_files); !problem.empty()) throw std::runtime_error(name + ": " + problem);
     const aiScene* scene = importer.ReadFileFromMemory(bytes.data(), bytes.size(), aiProcess_ValidateDataStructure, format.c_str());
     if (!readable(scene)) throw std::runtime_error(name + ": " + kUnreadable);
     model_from_scene(*scene, "", name, colour_space_of(format), no_files, model);

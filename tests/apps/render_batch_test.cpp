@@ -126,13 +126,86 @@ TEST(RenderBatch, NoPictureReplacesAnotherModelsInputAndNoModelReadsAPictureOfTh
     EXPECT_EQ(result.exit_code, 1);
     EXPECT_NE(result.err.find("render: brick.stl: cannot write './brick.png': it is the texture"), std::string::npos) << result.err;
     EXPECT_EQ(test_support::read_text(dir / "brick.png"), texture);
-    // Here brick's picture is written before wall.obj is read, and wall.obj is refused for reading it.
+    // brick.png was there before the run, so brick's picture waits until every model has been
+    // read: wall.obj reads the texture, and the picture that would replace it is refused.
     for (const char* old : {"tetra.png", "wall.png", "pyramid.png"}) std::filesystem::remove(dir / old);
-    std::filesystem::copy_file(dir / "brick.png", dir / "brick-texture.png");
     result = run(kRender, {"brick.stl", "tetra.stl", "pyramid.ply", "wall.obj", "--threads", "1", "--format", "png", "--output-dir", ".",
                            "--width", "20", "--height", "20"},
                  dir.path());
     EXPECT_EQ(result.exit_code, 1);
-    EXPECT_NE(result.err.find("render: wall.obj: reads 'brick.png', a picture this run wrote"), std::string::npos) << result.err;
-    EXPECT_FALSE(std::filesystem::exists(dir / "wall.png"));
+    EXPECT_NE(result.err.find("render: brick.stl: cannot write './brick.png': it is the texture"), std::string::npos) << result.err;
+    EXPECT_EQ(test_support::read_text(dir / "brick.png"), texture);
+    EXPECT_TRUE(std::filesystem::exists(dir / "wall.png")) << result.err;
+    EXPECT_EQ(result.out.find("brick.png"), std::string::npos) << result.out;
+    // A picture of this run is never read by a later model.
+    std::filesystem::remove(dir / "brick.png");
+    std::filesystem::copy_file(dir / "tetra.stl", dir / "a.stl");
+    test_support::write_text(dir / "b.mtl", "newmtl crate\nmap_Kd a.png\n");
+    test_support::write_text(dir / "b.obj", test_support::textured_cube_obj("b.mtl", "crate"));
+    for (const char* old : {"tetra.png", "pyramid.png"}) std::filesystem::remove(dir / old);
+    result = run(kRender, {"a.stl", "tetra.stl", "pyramid.ply", "b.obj", "--threads", "1", "--format", "png", "--output-dir", ".",
+                           "--width", "20", "--height", "20"},
+                 dir.path());
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_NE(result.err.find("render: b.obj: reads 'a.png', a picture this run wrote"), std::string::npos) << result.err;
+}
+
+TEST(RenderBatch, AGltfWhoseTextureIsAnEarlierModelsPictureKeepsItsTexture) {
+    const ScratchDir dir;
+    write_models(dir);
+    std::filesystem::create_directory(dir / "out");
+    std::filesystem::copy_file(dir / "checker.png", dir / "out/a.png");
+    test_support::write_text(dir / "a.gltf", test_support::gltf_two_squares());
+    std::string b = test_support::gltf_two_squares();
+    b.replace(b.find("\"materials\""), 0, R"("textures": [{"source": 0}], "images": [{"uri": "out/a.png"}], )");
+    b.replace(b.find("\"pbrMetallicRoughness\": {") + 25, 0, R"("baseColorTexture": {"index": 0}, )");
+    test_support::write_text(dir / "b.gltf", b);
+    const std::string texture = test_support::read_text(dir / "out/a.png");
+    const auto result = run(kRender, {"a.gltf", "b.gltf", "--format", "png", "--output-dir", "out", "--width", "20", "--height", "20"}, dir.path());
+    EXPECT_EQ(result.exit_code, 1) << result.err;
+    EXPECT_EQ(test_support::read_text(dir / "out/a.png"), texture);
+    EXPECT_TRUE(std::filesystem::exists(dir / "out/b.png"));
+    EXPECT_NE(result.err.find("render: a.gltf: cannot write 'out/a.png'"), std::string::npos) << result.err;
+}
+
+TEST(RenderBatch, AHostileModelIsOneLineAndTheBatchGoesOn) {
+    const ScratchDir dir;
+    write_models(dir);
+    std::string nodes;
+    for (int i = 0; i < 1000; ++i) nodes += (i > 0 ? "," : "") + std::string(R"({"children": [)") + (i + 1 < 1000 ? std::to_string(i + 1) : "") + "]}";
+    test_support::write_text(dir / "chain.gltf", R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}], "nodes": [)" + nodes + "]}");
+    const auto result = run(kRender, {"chain.gltf", "tetra.stl", "--output-dir", "out", "--width", "20", "--height", "20"}, dir.path());
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_TRUE(result.err.starts_with("render: chain.gltf: its nodes nest more than 256 deep\nrender: wrote 1 of 2 models")) << result.err;
+    EXPECT_TRUE(std::filesystem::exists(dir / "out/tetra.webp"));
+}
+
+TEST(RenderBatch, MaxMemoryBoundsEachModelsReadingAndTakesSizesAsPeopleWriteThem) {
+    const ScratchDir dir;
+    write_models(dir);
+    std::string ply = "ply\nformat binary_little_endian 1.0\nelement vertex 60000\nproperty float x\nproperty float y\nproperty float z\n"
+                      "element face 20000\nproperty list uchar int vertex_indices\nend_header\n";
+    for (int i = 0; i < 60000; ++i) {
+        const float p[3] = {static_cast<float>(i % 3 == 1), static_cast<float>(i % 3 == 2), static_cast<float>(i / 3) * 0.001F};
+        ply.append(reinterpret_cast<const char*>(p), sizeof p);
+    }
+    for (int f = 0; f < 20000; ++f) {
+        ply += '\x03';
+        for (int k = 0; k < 3; ++k) {
+            const std::int32_t index = 3 * f + k;
+            ply.append(reinterpret_cast<const char*>(&index), sizeof index);
+        }
+    }
+    test_support::write_text(dir / "big.ply", ply);
+    auto result = run(kRender, {"big.ply", "tetra.stl", "--max-memory", "1M", "--output-dir", "out", "--width", "20", "--height", "20"}, dir.path());
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_TRUE(result.err.starts_with("render: big.ply: the PLY reader needed more than 1 MiB of memory; raise --max-memory to allow it\n")) << result.err;
+    EXPECT_TRUE(std::filesystem::exists(dir / "out/tetra.webp"));
+    result = run(kRender, {"big.ply", "--max-memory", "2GiB", "--max-seconds", "60", "-o", "big.webp", "--width", "20", "--height", "20"}, dir.path());
+    EXPECT_EQ(result.exit_code, 0) << result.err;
+    result = run(kRender, {"big.ply", "--max-memory", "lots"}, dir.path());
+    EXPECT_EQ(result.exit_code, 2);
+    EXPECT_NE(result.err.find("'lots' is not a size like 512M or 2G"), std::string::npos) << result.err;
+    result = run(kRender, {"big.ply", "--max-seconds", "0"}, dir.path());
+    EXPECT_EQ(result.exit_code, 2);
 }

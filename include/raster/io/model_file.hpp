@@ -24,7 +24,9 @@ namespace raster {
 [[nodiscard]] Model parse_scene_file(std::span<const std::uint8_t> bytes, const std::string& format, const ObjOptions& options = {});
 
 // read_obj for .obj (any letter case), read_scene_file for .gltf, .glb, .stl and .ply; any other
-// ending is refused with the list of those it reads.
+// ending is refused with the list of those it reads, and a file whose first bytes are another
+// format's is refused saying what it looks like. The reader runs in a child process under
+// options.limits: a crash, a timeout or memory running out is one line naming the file.
 [[nodiscard]] Model read_model(const std::filesystem::path& path, const ObjOptions& options = {});
 
 }  // namespace raster

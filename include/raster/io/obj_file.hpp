@@ -1,6 +1,7 @@
 #pragma once
 
 #include <raster/geometry/model.hpp>
+#include <raster/io/reader_limits.hpp>
 #include <raster/io/texture_file.hpp>
 
 #include <cstdint>
@@ -29,6 +30,8 @@ struct ObjOptions {
     // When set (by confinement_root), nothing outside this directory is read: what the model
     // names there is missing, with a warning.
     std::filesystem::path confine{};
+    // What read_model lets one model's reading cost, in a process of its own.
+    ReaderLimits limits{};
 };
 
 // Reads an OBJ file, the MTL files it names (beside it) and their diffuse maps (relative to the

@@ -1,0 +1,209 @@
+#include "io/model_wire.hpp"
+
+#include <raster/rasterize/framebuffer.hpp>
+
+#include <cstring>
+#include <map>
+#include <memory>
+#include <stdexcept>
+#include <type_traits>
+#include <utility>
+
+namespace raster::detail {
+namespace {
+
+class WireWriter {
+public:
+    explicit WireWriter(std::vector<std::uint8_t>& out) : out_(out) {}
+
+    template <typename T>
+    void value(const T& v) {
+        static_assert(std::is_trivially_copyable_v<T>);
+        bytes(&v, sizeof v);
+    }
+    template <typename T>
+    void array(const std::vector<T>& items) {
+        static_assert(std::is_trivially_copyable_v<T>);
+        value(static_cast<std::uint64_t>(items.size()));
+        bytes(items.data(), items.size() * sizeof(T));
+    }
+    void text(const std::string& s) {
+        value(static_cast<std::uint64_t>(s.size()));
+        bytes(s.data(), s.size());
+    }
+
+private:
+    void bytes(const void* data, std::size_t size) {
+        const auto* first = static_cast<const std::uint8_t*>(data);
+        if (size > 0) out_.insert(out_.end(), first, first + size);
+    }
+    std::vector<std::uint8_t>& out_;
+};
+
+class WireReader {
+public:
+    explicit WireReader(std::span<const std::uint8_t> bytes) : rest_(bytes) {}
+
+    template <typename T>
+    T value() {
+        static_assert(std::is_trivially_copyable_v<T>);
+        T v;
+        std::memcpy(&v, take(sizeof v).data(), sizeof v);
+        return v;
+    }
+    template <typename T>
+    std::vector<T> array() {
+        const auto count = value<std::uint64_t>();
+        if (count > rest_.size() / sizeof(T)) broken();
+        std::vector<T> items(static_cast<std::size_t>(count));
+        if (count > 0) std::memcpy(items.data(), take(items.size() * sizeof(T)).data(), items.size() * sizeof(T));
+        return items;
+    }
+    std::string text() {
+        const auto count = value<std::uint64_t>();
+        if (count > rest_.size()) broken();
+        const auto bytes = take(static_cast<std::size_t>(count));
+        return {reinterpret_cast<const char*>(bytes.data()), bytes.size()};
+    }
+    [[nodiscard]] bool done() const noexcept { return rest_.empty(); }
+    [[noreturn]] static void broken() { throw std::runtime_error("the reader process sent a model that does not hold together"); }
+
+private:
+    std::span<const std::uint8_t> take(std::size_t size) {
+        if (size > rest_.size()) broken();
+        const auto taken = rest_.first(size);
+        rest_ = rest_.subspan(size);
+        return taken;
+    }
+    std::span<const std::uint8_t> rest_;
+};
+
+constexpr std::uint32_t kWireMark = 0x52574d31;  // "RWM1"
+
+void write_mesh(WireWriter& out, const Mesh& mesh) {
+    out.array(mesh.positions);
+    out.array(mesh.normals);
+    out.array(mesh.facets);
+    out.value(static_cast<std::uint8_t>(mesh.surface));
+    out.value(static_cast<std::uint8_t>(mesh.convex));
+    out.array(mesh.uvs);
+    out.array(mesh.colours);
+}
+
+Mesh read_mesh(WireReader& in) {
+    Mesh mesh;
+    mesh.positions = in.array<glm::vec3>();
+    mesh.normals = in.array<glm::vec3>();
+    mesh.facets = in.array<Facet>();
+    const auto surface = in.value<std::uint8_t>();
+    if (surface > static_cast<std::uint8_t>(Surface::faceted)) WireReader::broken();
+    mesh.surface = static_cast<Surface>(surface);
+    mesh.convex = in.value<std::uint8_t>() != 0;
+    mesh.uvs = in.array<glm::vec2>();
+    mesh.colours = in.array<LinearRgb>();
+    const std::size_t n = mesh.positions.size();
+    if ((!mesh.normals.empty() && mesh.normals.size() != n) || (!mesh.uvs.empty() && mesh.uvs.size() != n) ||
+        (!mesh.colours.empty() && mesh.colours.size() != n)) {
+        WireReader::broken();
+    }
+    for (const Facet& facet : mesh.facets) {
+        for (const std::uint32_t corner : facet.corners) {
+            if (corner >= n) WireReader::broken();
+        }
+    }
+    return mesh;
+}
+
+}  // namespace
+
+void append_model_wire(const Model& model, std::vector<std::uint8_t>& out) {
+    WireWriter wire(out);
+    wire.value(kWireMark);
+    std::map<const Texture*, std::uint32_t> numbers;
+    std::vector<const Texture*> textures;
+    for (const ModelPart& part : model.parts) {
+        if (part.texture && numbers.emplace(part.texture.get(), static_cast<std::uint32_t>(textures.size())).second) {
+            textures.push_back(part.texture.get());
+        }
+    }
+    wire.value(static_cast<std::uint64_t>(textures.size()));
+    for (const Texture* texture : textures) {  // level 0 only: the mip chain is built again from it
+        const Framebuffer& image = texture->level(0);
+        wire.value(image.width());
+        wire.value(image.height());
+        wire.array(std::vector<std::uint8_t>(image.bytes().begin(), image.bytes().end()));
+    }
+    wire.value(static_cast<std::uint64_t>(model.parts.size()));
+    for (const ModelPart& part : model.parts) {
+        wire.text(part.material_name);
+        write_mesh(wire, part.mesh);
+        wire.value(part.material.emissive);
+        wire.value(part.material.diffuse);
+        wire.value(part.material.specular);
+        wire.value(static_cast<std::uint8_t>(part.material.shininess.has_value()));
+        wire.value(part.material.shininess.value_or(0.0F));
+        wire.value(part.texture ? numbers.at(part.texture.get()) : UINT32_MAX);
+        wire.value(static_cast<std::uint8_t>(part.sampler.filter));
+        wire.value(static_cast<std::uint8_t>(part.sampler.wrap));
+    }
+    wire.value(static_cast<std::uint64_t>(model.warnings.size()));
+    for (const std::string& warning : model.warnings) wire.text(warning);
+    wire.value(static_cast<std::uint64_t>(model.sources.size()));
+    for (const InputRecord& source : model.sources) {
+        wire.text(source.path.string());
+        wire.value(source.identity);
+        wire.text(source.role);
+    }
+}
+
+Model model_from_wire(std::span<const std::uint8_t> bytes) {
+    WireReader wire(bytes);
+    if (wire.value<std::uint32_t>() != kWireMark) WireReader::broken();
+    const auto texture_count = wire.value<std::uint64_t>();
+    if (texture_count > bytes.size()) WireReader::broken();
+    std::vector<std::shared_ptr<const Texture>> textures(static_cast<std::size_t>(texture_count));
+    for (auto& texture : textures) {
+        const auto width = wire.value<int>();
+        const auto height = wire.value<int>();
+        std::vector<std::uint8_t> rgb = wire.array<std::uint8_t>();
+        if (width <= 0 || height <= 0 || rgb.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3) WireReader::broken();
+        texture = std::make_shared<const Texture>(Framebuffer(width, height, std::move(rgb)));
+    }
+    Model model;
+    const auto parts = wire.value<std::uint64_t>();
+    for (std::uint64_t i = 0; i < parts; ++i) {
+        ModelPart part;
+        part.material_name = wire.text();
+        part.mesh = read_mesh(wire);
+        part.material.emissive = wire.value<LinearRgb>();
+        part.material.diffuse = wire.value<LinearRgb>();
+        part.material.specular = wire.value<LinearRgb>();
+        const bool shiny = wire.value<std::uint8_t>() != 0;
+        const auto shininess = wire.value<float>();
+        if (shiny) part.material.shininess = shininess;
+        const auto texture = wire.value<std::uint32_t>();
+        if (texture != UINT32_MAX) {
+            if (texture >= textures.size()) WireReader::broken();
+            part.texture = textures[texture];
+        }
+        const auto filter = wire.value<std::uint8_t>();
+        const auto wrap = wire.value<std::uint8_t>();
+        if (filter > static_cast<std::uint8_t>(TextureFilter::trilinear) || wrap > static_cast<std::uint8_t>(TextureWrap::clamp)) WireReader::broken();
+        part.sampler = {static_cast<TextureFilter>(filter), static_cast<TextureWrap>(wrap)};
+        model.parts.push_back(std::move(part));
+    }
+    const auto warnings = wire.value<std::uint64_t>();
+    for (std::uint64_t i = 0; i < warnings; ++i) model.warnings.push_back(wire.text());
+    const auto sources = wire.value<std::uint64_t>();
+    for (std::uint64_t i = 0; i < sources; ++i) {
+        InputRecord record;
+        record.path = wire.text();
+        record.identity = wire.value<FileIdentity>();
+        record.role = wire.text();
+        model.sources.push_back(std::move(record));
+    }
+    if (!wire.done()) WireReader::broken();
+    return model;
+}
+
+}  // namespace raster::detail

@@ -1,0 +1,20 @@
+#pragma once
+
+#include <raster/geometry/model.hpp>
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+// A Model as bytes, for the trip from the reader process to the one that draws it. The reader
+// trusts nothing: every count is checked against the bytes that remain.
+namespace raster::detail {
+
+// Appends `model` to `out`; textures shared by parts are written once.
+void append_model_wire(const Model& model, std::vector<std::uint8_t>& out);
+
+// The model written by append_model_wire; throws std::runtime_error for bytes it did not write.
+[[nodiscard]] Model model_from_wire(std::span<const std::uint8_t> bytes);
+
+}  // namespace raster::detail

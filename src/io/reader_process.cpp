@@ -1,0 +1,205 @@
+#include "io/reader_process.hpp"
+
+#include "io/model_wire.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <fcntl.h>
+#include <new>
+#include <poll.h>
+#include <stdexcept>
+#include <sys/prctl.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <vector>
+
+#if defined(__SANITIZE_ADDRESS__)
+#define RASTER_ADDRESS_SANITIZER 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define RASTER_ADDRESS_SANITIZER 1
+#endif
+#endif
+
+namespace raster {
+
+std::uint64_t default_max_memory() noexcept {
+    const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGE_SIZE);
+    if (pages <= 0 || page <= 0) return std::uint64_t{1} << 30;
+    return static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page) / 2;
+}
+
+namespace detail {
+namespace {
+
+// What the child sends first: a model, a reason it could not read one, or that memory ran out.
+enum class Outcome : std::uint8_t { model = 'M', refused = 'E', out_of_memory = 'N' };
+
+// Set by the child's new-handler: assimp turns a failed allocation into "could not read", so
+// the child remembers that memory ran out. Static because a new-handler reaches nothing else.
+volatile std::sig_atomic_t memory_ran_out = 0;
+
+void note_memory_ran_out() {
+    memory_ran_out = 1;
+    std::set_new_handler(nullptr);
+    throw std::bad_alloc();
+}
+
+std::string memory_text(std::uint64_t bytes) {
+    char text[32];
+    const bool gib = bytes >= (std::uint64_t{1} << 30);
+    std::snprintf(text, sizeof text, gib ? "%.1f GiB" : "%.0f MiB", static_cast<double>(bytes) / static_cast<double>(std::uint64_t{1} << (gib ? 30 : 20)));
+    return text;
+}
+
+std::string seconds_text(double seconds) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g s", seconds);
+    return text;
+}
+
+// The address space the process holds now, from /proc/self/statm; 0 where it cannot be read.
+std::uint64_t address_space_now() {
+    std::FILE* statm = std::fopen("/proc/self/statm", "r");
+    if (statm == nullptr) return 0;
+    unsigned long long pages = 0;
+    const int got = std::fscanf(statm, "%llu", &pages);
+    std::fclose(statm);
+    return got == 1 ? pages * static_cast<std::uint64_t>(::sysconf(_SC_PAGE_SIZE)) : 0;
+}
+
+void write_all(int descriptor, const std::vector<std::uint8_t>& bytes) {
+    std::size_t sent = 0;
+    while (sent < bytes.size()) {
+        const ::ssize_t n = ::write(descriptor, bytes.data() + sent, bytes.size() - sent);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) ::_exit(3);
+        sent += static_cast<std::size_t>(n);
+    }
+}
+
+[[noreturn]] void run_child(const std::function<Model()>& read, int out, std::uint64_t max_memory, double max_seconds) {
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // never outlives the process waiting for it
+    const rlimit no_core{0, 0}, no_files{0, 0};
+    ::setrlimit(RLIMIT_CORE, &no_core);
+    ::setrlimit(RLIMIT_FSIZE, &no_files);  // a reader writes nothing but the pipe
+    const auto cpu = static_cast<rlim_t>(std::ceil(max_seconds));
+    const rlimit processor{cpu, cpu + 1};
+    ::setrlimit(RLIMIT_CPU, &processor);
+#ifndef RASTER_ADDRESS_SANITIZER  // its shadow memory takes terabytes of address space
+    const rlimit memory{address_space_now() + max_memory, address_space_now() + max_memory};
+    ::setrlimit(RLIMIT_AS, &memory);
+#endif
+    std::signal(SIGPIPE, SIG_DFL);
+    std::set_new_handler(note_memory_ran_out);
+    std::vector<std::uint8_t> message;
+    try {
+        Model model = read();
+        message.push_back(static_cast<std::uint8_t>(Outcome::model));
+        append_model_wire(model, message);
+    } catch (const std::bad_alloc&) {
+        message.assign(1, static_cast<std::uint8_t>(Outcome::out_of_memory));
+    } catch (const std::exception& problem) {
+        const std::string why = problem.what();
+        message.assign(1, static_cast<std::uint8_t>(memory_ran_out != 0 ? Outcome::out_of_memory : Outcome::refused));
+        message.insert(message.end(), why.begin(), why.end());
+    }
+    write_all(out, message);
+    ::_exit(0);
+}
+
+std::string signal_name(int signal) {
+    switch (signal) {
+    case SIGSEGV: return "segmentation fault";
+    case SIGBUS: return "bus error";
+    case SIGABRT: return "aborted";
+    case SIGILL: return "illegal instruction";
+    case SIGFPE: return "arithmetic exception";
+    default: return "signal " + std::to_string(signal);
+    }
+}
+
+}  // namespace
+
+Model read_in_child(const std::function<Model()>& read, const std::string& name, const std::string& reader, const ReaderLimits& limits) {
+    if (!limits.separate_process) return read();
+    const std::uint64_t max_memory = limits.max_memory > 0 ? limits.max_memory : default_max_memory();
+    const double max_seconds = std::max(limits.max_seconds, 0.001);
+    const std::string memory_refusal =
+        name + ": the " + reader + " reader needed more than " + memory_text(max_memory) + " of memory; raise --max-memory to allow it";
+    const std::string time_refusal = name + ": the " + reader + " reader took more than " + seconds_text(max_seconds) + "; raise --max-seconds to allow it";
+    int pipe_ends[2];
+    if (::pipe2(pipe_ends, O_CLOEXEC) != 0) throw std::runtime_error(name + ": cannot start the reader process: " + std::strerror(errno));
+    const ::pid_t child = ::fork();
+    if (child < 0) {
+        ::close(pipe_ends[0]);
+        ::close(pipe_ends[1]);
+        throw std::runtime_error(name + ": cannot start the reader process: " + std::strerror(errno));
+    }
+    if (child == 0) {
+        ::close(pipe_ends[0]);
+        run_child(read, pipe_ends[1], max_memory, max_seconds);
+    }
+    ::close(pipe_ends[1]);
+    std::vector<std::uint8_t> received;
+    bool timed_out = false, too_large = false;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(max_seconds);
+    std::vector<std::uint8_t> block(std::size_t{1} << 20);
+    for (;;) {
+        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now()).count();
+        if (left <= 0) {
+            timed_out = true;
+            break;
+        }
+        pollfd ready{pipe_ends[0], POLLIN, 0};
+        const int polled = ::poll(&ready, 1, static_cast<int>(std::min<long long>(left, 1000)));
+        if (polled < 0 && errno != EINTR) break;
+        if (polled <= 0) continue;
+        const ::ssize_t n = ::read(pipe_ends[0], block.data(), block.size());
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) break;
+        if (received.size() + static_cast<std::size_t>(n) > max_memory) {
+            too_large = true;
+            break;
+        }
+        received.insert(received.end(), block.begin(), block.begin() + n);
+    }
+    ::close(pipe_ends[0]);
+    if (timed_out || too_large) ::kill(child, SIGKILL);
+    int status = 0;
+    rusage used{};
+    while (::wait4(child, &status, 0, &used) < 0 && errno == EINTR) {
+    }
+    if (timed_out) throw std::runtime_error(time_refusal);
+    if (too_large) throw std::runtime_error(memory_refusal);
+    if (WIFSIGNALED(status)) {
+        const int signal = WTERMSIG(status);
+        const double processor = static_cast<double>(used.ru_utime.tv_sec + used.ru_stime.tv_sec) + 1e-6 * static_cast<double>(used.ru_utime.tv_usec + used.ru_stime.tv_usec);
+        if (signal == SIGXCPU || (signal == SIGKILL && processor >= std::ceil(max_seconds))) throw std::runtime_error(time_refusal);
+        if (signal == SIGKILL) throw std::runtime_error(name + ": the " + reader + " reader was killed (by the system, perhaps for want of memory)");
+        throw std::runtime_error(name + ": the " + reader + " reader crashed (" + signal_name(signal) + ")");
+    }
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || received.empty()) {
+        // A sanitizer's report ends the child with an exit code of its own.
+        throw std::runtime_error(name + ": the " + reader + " reader crashed (exit status " + std::to_string(WEXITSTATUS(status)) + ")");
+    }
+    const auto outcome = static_cast<Outcome>(received.front());
+    const std::span<const std::uint8_t> rest = std::span<const std::uint8_t>(received).subspan(1);
+    if (outcome == Outcome::out_of_memory) throw std::runtime_error(memory_refusal);
+    if (outcome == Outcome::refused) throw std::runtime_error(std::string(rest.begin(), rest.end()));
+    if (outcome != Outcome::model) throw std::runtime_error(name + ": the " + reader + " reader sent nothing raster understands");
+    try {
+        return model_from_wire(rest);
+    } catch (const std::runtime_error& problem) {
+        throw std::runtime_error(name + ": " + problem.what());
+    }
+}
+
+}  // namespace detail
+}  // namespace raster
