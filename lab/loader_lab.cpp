@@ -58,14 +58,16 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// product-nomaps is the product without decoding texture maps: how much of its time the maps are.
-enum class Loader { product, product_nomaps, assimp, tinygltf, tinyobjloader };
-constexpr std::array kLoaders{Loader::product, Loader::product_nomaps, Loader::assimp, Loader::tinygltf, Loader::tinyobjloader};
+// product-nomaps is the product without decoding texture maps: how much of its time the maps are;
+// product-in-process reads in this process rather than a child: what the child process costs.
+enum class Loader { product, product_nomaps, product_in_process, assimp, tinygltf, tinyobjloader };
+constexpr std::array kLoaders{Loader::product, Loader::product_nomaps, Loader::product_in_process, Loader::assimp, Loader::tinygltf, Loader::tinyobjloader};
 
 const char* name_of(Loader loader) {
     switch (loader) {
         case Loader::product: return "product";
         case Loader::product_nomaps: return "product-nomaps";
+        case Loader::product_in_process: return "product-in-process";
         case Loader::assimp: return "assimp";
         case Loader::tinygltf: return "tinygltf";
         case Loader::tinyobjloader: return "tinyobjloader";
@@ -146,9 +148,11 @@ struct WalkError : std::runtime_error {
 
 // ---- product ----------------------------------------------------------------------------------
 
-Reading by_product(const fs::path& path, bool maps) {
+// `apart`: in a child process under limits, as `render` reads; else in this one, to see what that costs.
+Reading by_product(const fs::path& path, bool maps, bool apart = true) {
     raster::ObjOptions options;  // what `render` passes, maps included unless asked not to
     options.load_textures = maps;
+    options.limits.separate_process = apart;
     const raster::Model model = raster::read_model(path, options);
     Reading r;
     r.triangles = raster::triangle_count(model);  // flat ones were dropped while building it
@@ -437,6 +441,7 @@ Reading read_with(Loader loader, const fs::path& path) {
     switch (loader) {
         case Loader::product: return by_product(path, true);
         case Loader::product_nomaps: return by_product(path, false);
+        case Loader::product_in_process: return by_product(path, true, false);
         case Loader::assimp: return by_assimp(path);
         case Loader::tinygltf: return by_tinygltf(path);
         case Loader::tinyobjloader: return by_tinyobjloader(path);
@@ -704,7 +709,7 @@ int main(int argc, char** argv) {
     // Every (file, loader) once in a child process first: what it read, refused, or died of.
     for (Case& c : all) {
         for (const Loader loader : kLoaders) {
-            if (!reads(loader, c.path) || (c.malformed && loader == Loader::product_nomaps)) continue;
+            if (!reads(loader, c.path) || (c.malformed && (loader == Loader::product_nomaps || loader == Loader::product_in_process))) continue;
             c.outcomes[loader] = probe(loader, c.path);
             Outcome& o = c.outcomes[loader];
             // The product names the file first ("file: ..." or "file:12: ..."); the tables already do.
@@ -787,7 +792,7 @@ int main(int argc, char** argv) {
     std::ofstream summary(out / "loaders-summary.md");
     summary << "Load time, ms: median of " << rounds << " rounds (each the mean of a batch of loads lasting about " << kSampleSeconds * 1e3
             << " ms), with the fastest and slowest round. Files from assimp-testmodels (" << models.string() << ").\n\n";
-    summary << "| file | triangles in the file | product | product-nomaps | assimp | tinygltf | tinyobjloader |\n|---|---|---|---|---|---|---|\n";
+    summary << "| file | triangles in the file | product | product-nomaps | product-in-process | assimp | tinygltf | tinyobjloader |\n|---|---|---|---|---|---|---|---|\n";
     for (const Case& c : all) {
         if (c.malformed) continue;
         std::size_t triangles = 0;
