@@ -50,7 +50,7 @@ const Json& array_of(const Json& root, const char* key) {
 std::uint64_t number_at(const Json& object, const char* key, const std::string& what, std::uint64_t fallback = 0) {
     const auto found = object.find(key);
     if (found == object.end()) return fallback;
-    if (!found->is_number_unsigned()) throw Broken(what + " has a '" + key + "' that is not a whole number of 0 or more");
+    if (!found->is_number_unsigned()) throw Broken(what + "'s '" + key + "' is not a whole number of 0 or more");
     return found->get<std::uint64_t>();
 }
 
@@ -58,7 +58,7 @@ std::uint64_t number_at(const Json& object, const char* key, const std::string& 
 std::optional<std::uint64_t> index_at(const Json& object, const char* key, std::size_t count, const std::string& what, const char* of) {
     if (!object.is_object() || object.find(key) == object.end()) return std::nullopt;
     const std::uint64_t index = number_at(object, key, what);
-    if (index >= count) throw Broken(what + " names " + of + " " + std::to_string(index) + ", of " + std::to_string(count));
+    if (index >= count) throw Broken(what + " names " + of + " " + std::to_string(index) + ", but there are " + std::to_string(count));
     return index;
 }
 
@@ -308,7 +308,7 @@ std::string gltf_structure_problem(std::span<const std::uint8_t> bytes, bool bin
         std::optional<std::uint64_t> binary_chunk;
         if (binary) {
             if (bytes.size() < 20 || word_at(bytes, 0) != 0x46546C67U) throw Broken("is not a glTF binary file");
-            if (word_at(bytes, 4) != 2) throw Broken("is a glTF binary of version " + std::to_string(word_at(bytes, 4)) + ", not 2");
+            if (word_at(bytes, 4) != 2) throw Broken("is glTF " + std::to_string(word_at(bytes, 4)) + ".0 binary; raster reads glTF 2.0");
             if (word_at(bytes, 8) > bytes.size()) throw Broken("claims " + std::to_string(word_at(bytes, 8)) + " bytes but holds " + std::to_string(bytes.size()));
             const std::size_t end = word_at(bytes, 8);
             for (std::size_t at = 12; at + 8 <= end;) {
@@ -325,6 +325,13 @@ std::string gltf_structure_problem(std::span<const std::uint8_t> bytes, bool bin
         if (json_depth(text) > kMaxJsonDepth) throw Broken("its JSON nests more than " + std::to_string(kMaxJsonDepth) + " deep");
         const Json root = Json::parse(text, nullptr, false);
         if (root.is_discarded() || !root.is_object()) throw Broken("its JSON does not parse as an object");
+        const Json asset = root.value("asset", Json::object());
+        if (const auto version = asset.find("version"); version != asset.end() && version->is_string() && version->get<std::string>().starts_with("1")) {
+            throw Broken("is glTF " + version->get<std::string>().substr(0, 8) + "; raster reads glTF 2.0");
+        }
+        if (const auto buffers = root.find("buffers"); buffers != root.end() && buffers->is_object()) {
+            throw Broken("is glTF 1.0 (its buffers are named, not listed); raster reads glTF 2.0");
+        }
         const std::vector<View> views = buffer_views(root, buffer_lengths(root, binary_chunk, external_size));
         check_accessors(root, views);
         check_indices(root);

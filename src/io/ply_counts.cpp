@@ -51,7 +51,7 @@ std::string binary_problem(const std::vector<PlyElement>& elements, std::span<co
         for (std::uint64_t i = 0; i < element.count; ++i) {
             for (const PlyProperty& property : element.properties) {
                 std::uint64_t need = static_cast<std::uint64_t>(property.list ? property.count_bytes : property.item_bytes);
-                if (need > body.size() - at) return declares(element) + ", but the file ends in item " + std::to_string(i + 1);
+                if (need > body.size() - at) return "";  // cut short: the reader keeps what is there
                 if (property.list) {
                     const std::uint64_t length = list_length(body.data() + at, property, big_endian);
                     at += need;
@@ -74,7 +74,7 @@ std::string ascii_problem(const std::vector<PlyElement>& elements, std::string_v
     for (const PlyElement& element : elements) {
         if (element.count > body.size() - at) return declares(element) + ", more than the " + std::to_string(body.size() - at) + " bytes left";
         for (std::uint64_t i = 0; i < element.count; ++i) {
-            if (at >= body.size()) return declares(element) + ", but the file ends in item " + std::to_string(i + 1);
+            if (at >= body.size()) return "";  // cut short: the reader keeps what is there
             const std::size_t end = std::min(body.find('\n', at), body.size());
             const std::vector<std::string_view> words = ply_words(body.substr(at, end - at));
             at = end + 1;
@@ -84,8 +84,9 @@ std::string ascii_problem(const std::vector<PlyElement>& elements, std::string_v
                     ++word;
                     continue;
                 }
+                if (word >= words.size()) break;  // no length written: an empty list, as assimp reads it
                 std::uint64_t length = 0;
-                const std::string_view text = word < words.size() ? words[word] : std::string_view();
+                const std::string_view text = words[word];
                 const auto [stop, error] = std::from_chars(text.data(), text.data() + text.size(), length);
                 if (error != std::errc() || stop != text.data() + text.size() || length > words.size() - word - 1) {
                     return "'" + std::string(element.name) + "' item " + std::to_string(i + 1) + " has a list longer than its line";

@@ -21,9 +21,10 @@ inline constexpr std::size_t kMaxPlyHeaderBytes = 64 * 1024;
 // The words of one header line, split at spaces and tabs.
 [[nodiscard]] std::vector<std::string_view> ply_words(std::string_view line);
 
-// "" when every element the header declares, and every list in it, fits in the bytes after the
-// header (a binary body walked byte by byte, an ASCII one line by line); else the first that
-// does not, before a reader allocates what a few hundred bytes claim. Call after
+// "" when no element count is larger than the bytes after the header and no list is longer than
+// the bytes after its length (a binary body walked byte by byte, an ASCII one line by line);
+// else the first that is, before a reader allocates what a few hundred bytes claim. A body
+// that is merely cut short passes: the reader keeps what is there. Call after
 // ply_header_problem passed.
 [[nodiscard]] std::string ply_counts_problem(std::span<const std::uint8_t> bytes);
 

@@ -155,9 +155,6 @@ TEST(HostileModels, PlyCountsLargerThanTheBytesBehindThemAreRefusedBeforeAllocat
               "'face' item 1 has a list of 2147483647 entries, more than the bytes left can hold");
     EXPECT_EQ(refusal(dir, "negative.ply", header + "element face 1\nproperty list int int vertex_indices\nend_header\n" + vertices + little_endian(0xFFFFFFFFU)),
               "'face' item 1 has a list of negative length, more than the bytes left can hold");
-    EXPECT_EQ(refusal(dir, "cut.ply", header + "element face 2\nproperty list uchar int vertex_indices\nend_header\n" + vertices + "\x03" +
-                                          std::string(12, '\0')),
-              "the PLY header declares 2 'face' elements, but the file ends in item 2");
     EXPECT_EQ(refusal(dir, "ascii.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
                                         "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n200 0 1 2\n"),
               "'face' item 1 has a list longer than its line");
