@@ -116,6 +116,20 @@ Mesh read_mesh(WireReader& in) {
 
 }  // namespace
 
+std::size_t model_wire_size(const Model& model) noexcept {
+    std::size_t size = 4096;
+    std::map<const Texture*, bool> counted;
+    for (const ModelPart& part : model.parts) {
+        const Mesh& m = part.mesh;
+        size += 256 + part.material_name.size() + m.positions.size() * sizeof(glm::vec3) + m.normals.size() * sizeof(glm::vec3) +
+                m.facets.size() * sizeof(Facet) + m.uvs.size() * sizeof(glm::vec2) + m.colours.size() * sizeof(LinearRgb);
+        if (part.texture && counted.emplace(part.texture.get(), true).second) size += 64 + part.texture->level(0).bytes().size();
+    }
+    for (const std::string& warning : model.warnings) size += 8 + warning.size();
+    for (const InputRecord& source : model.sources) size += 64 + source.path.native().size() + source.role.size();
+    return size;
+}
+
 void append_model_wire(const Model& model, std::vector<std::uint8_t>& out) {
     WireWriter wire(out);
     wire.value(kWireMark);

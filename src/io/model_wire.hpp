@@ -11,6 +11,9 @@
 // trusts nothing: every count is checked against the bytes that remain.
 namespace raster::detail {
 
+// About how many bytes append_model_wire writes for `model`: enough to reserve them at once.
+[[nodiscard]] std::size_t model_wire_size(const Model& model) noexcept;
+
 // Appends `model` to `out`; textures shared by parts are written once.
 void append_model_wire(const Model& model, std::vector<std::uint8_t>& out);
 

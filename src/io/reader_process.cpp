@@ -2,6 +2,9 @@
 
 #include "io/model_wire.hpp"
 
+#include <cstdint>
+#include <cstring>
+
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
@@ -98,18 +101,21 @@ void write_all(int descriptor, const std::vector<std::uint8_t>& bytes) {
 #endif
     std::signal(SIGPIPE, SIG_DFL);
     std::set_new_handler(note_memory_ran_out);
-    std::vector<std::uint8_t> message;
+    std::vector<std::uint8_t> message(sizeof(std::uint64_t));  // its length goes first
     try {
         Model model = read();
+        message.reserve(sizeof(std::uint64_t) + 1 + model_wire_size(model));
         message.push_back(static_cast<std::uint8_t>(Outcome::model));
         append_model_wire(model, message);
     } catch (const std::bad_alloc&) {
-        message.assign(1, static_cast<std::uint8_t>(Outcome::out_of_memory));
+        message.assign(sizeof(std::uint64_t) + 1, static_cast<std::uint8_t>(Outcome::out_of_memory));
     } catch (const std::exception& problem) {
         const std::string why = problem.what();
-        message.assign(1, static_cast<std::uint8_t>(memory_ran_out != 0 ? Outcome::out_of_memory : Outcome::refused));
+        message.assign(sizeof(std::uint64_t) + 1, static_cast<std::uint8_t>(memory_ran_out != 0 ? Outcome::out_of_memory : Outcome::refused));
         message.insert(message.end(), why.begin(), why.end());
     }
+    const std::uint64_t length = message.size() - sizeof length;
+    std::memcpy(message.data(), &length, sizeof length);
     write_all(out, message);
     ::_exit(0);
 }
@@ -147,11 +153,13 @@ Model read_in_child(const std::function<Model()>& read, const std::string& name,
         run_child(read, pipe_ends[1], max_memory, max_seconds);
     }
     ::close(pipe_ends[1]);
-    std::vector<std::uint8_t> received;
-    bool timed_out = false, too_large = false;
+    ::fcntl(pipe_ends[0], F_SETPIPE_SZ, 1 << 20);  // fewer trips for a large model; the default where refused
+    // The length comes first, so the model lands in one buffer of its own size.
+    std::vector<std::uint8_t> received(sizeof(std::uint64_t));
+    std::size_t got = 0;
+    bool timed_out = false, too_large = false, length_known = false;
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(max_seconds);
-    std::vector<std::uint8_t> block(std::size_t{1} << 20);
-    for (;;) {
+    while (got < received.size()) {
         const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now()).count();
         if (left <= 0) {
             timed_out = true;
@@ -161,21 +169,44 @@ Model read_in_child(const std::function<Model()>& read, const std::string& name,
         const int polled = ::poll(&ready, 1, static_cast<int>(std::min<long long>(left, 1000)));
         if (polled < 0 && errno != EINTR) break;
         if (polled <= 0) continue;
-        const ::ssize_t n = ::read(pipe_ends[0], block.data(), block.size());
+        const ::ssize_t n = ::read(pipe_ends[0], received.data() + got, received.size() - got);
         if (n < 0 && errno == EINTR) continue;
         if (n <= 0) break;
-        if (received.size() + static_cast<std::size_t>(n) > max_memory) {
-            too_large = true;
-            break;
+        got += static_cast<std::size_t>(n);
+        if (!length_known && got == received.size()) {
+            std::uint64_t length = 0;
+            std::memcpy(&length, received.data(), sizeof length);
+            if (length > max_memory) {
+                too_large = true;
+                break;
+            }
+            received.assign(static_cast<std::size_t>(length), 0);
+            got = 0;
+            length_known = true;
         }
-        received.insert(received.end(), block.begin(), block.begin() + n);
     }
+    if (!length_known || got < received.size()) received.clear();  // the child died before it had said all
     ::close(pipe_ends[0]);
     if (timed_out || too_large) ::kill(child, SIGKILL);
     int status = 0;
     rusage used{};
-    while (::wait4(child, &status, 0, &used) < 0 && errno == EINTR) {
+    const auto reap = [&] {
+        while (::wait4(child, &status, 0, &used) < 0 && errno == EINTR) {
+        }
+    };
+    if (!timed_out && !too_large && !received.empty() && static_cast<Outcome>(received.front()) == Outcome::model) {
+        // Decoded while the child gives its memory back, then reaped: it said all it had to say.
+        const std::span<const std::uint8_t> rest = std::span<const std::uint8_t>(received).subspan(1);
+        try {
+            Model model = model_from_wire(rest);
+            reap();
+            return model;
+        } catch (const std::runtime_error& problem) {
+            reap();
+            throw std::runtime_error(name + ": " + problem.what());
+        }
     }
+    reap();
     if (timed_out) throw std::runtime_error(time_refusal);
     if (too_large) throw std::runtime_error(memory_refusal);
     if (WIFSIGNALED(status)) {
@@ -193,12 +224,7 @@ Model read_in_child(const std::function<Model()>& read, const std::string& name,
     const std::span<const std::uint8_t> rest = std::span<const std::uint8_t>(received).subspan(1);
     if (outcome == Outcome::out_of_memory) throw std::runtime_error(memory_refusal);
     if (outcome == Outcome::refused) throw std::runtime_error(std::string(rest.begin(), rest.end()));
-    if (outcome != Outcome::model) throw std::runtime_error(name + ": the " + reader + " reader sent nothing raster understands");
-    try {
-        return model_from_wire(rest);
-    } catch (const std::runtime_error& problem) {
-        throw std::runtime_error(name + ": " + problem.what());
-    }
+    throw std::runtime_error(name + ": the " + reader + " reader sent nothing raster understands");
 }
 
 }  // namespace detail
