@@ -1,5 +1,6 @@
 #include <raster/io/held_signals.hpp>
 
+#include <atomic>
 #include <condition_variable>
 #include <mutex>
 #include <stdexcept>
@@ -8,10 +9,12 @@
 namespace raster {
 namespace {
 
-// Which held signals came, by number; static because a handler reaches nothing else.
-volatile std::sig_atomic_t arrived_signals[NSIG] = {};
+// Which held signals came, by number; static because a handler reaches nothing else, atomic
+// because the handler may run on another thread than the holder's.
+std::atomic<bool> arrived_signals[NSIG] = {};
+static_assert(std::atomic<bool>::is_always_lock_free, "a signal handler may only touch lock-free atomics");
 
-extern "C" void note_signal(int signal) { arrived_signals[signal] = 1; }
+extern "C" void note_signal(int signal) { arrived_signals[signal] = true; }
 
 // How many holders each signal has and the handler it had before: as process-wide as the
 // handlers themselves, so shared by every holder on every thread.
@@ -44,7 +47,7 @@ HeldSignals::HeldSignals(std::span<const int> signals) : signals_(signals.begin(
     if (held_on_this_thread == 0) {
         shared.released.wait(lock, [&] {
             for (const int signal : signals_) {
-                if (shared.count[signal] > 0 && arrived_signals[signal] != 0) return false;
+                if (shared.count[signal] > 0 && arrived_signals[signal]) return false;
             }
             return true;
         });
@@ -71,8 +74,8 @@ HeldSignals::~HeldSignals() {
     }
     // Raised with the lock held: no new holder starts before the signal has done what it does.
     for (const int signal : signals_) {
-        if (shared.count[signal] == 0 && arrived_signals[signal] != 0) {
-            arrived_signals[signal] = 0;
+        if (shared.count[signal] == 0 && arrived_signals[signal]) {
+            arrived_signals[signal] = false;
             ::raise(signal);
         }
     }
@@ -81,7 +84,7 @@ HeldSignals::~HeldSignals() {
 
 bool HeldSignals::arrived() const {
     for (const int signal : signals_) {
-        if (arrived_signals[signal] != 0) return true;
+        if (arrived_signals[signal]) return true;
     }
     return false;
 }
