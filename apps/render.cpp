@@ -284,6 +284,18 @@ int main(int argc, char** argv) {
                    "Read nothing outside DIR (after resolving .. and symbolic links): the model must lie inside it, and "
                    "material libraries and textures the model names outside it are treated as missing, with a warning. "
                    "For models you did not make (README: Rendering models you did not make)")
+        ->check(CLI::Validator(
+            [](std::string& text) -> std::string {
+                // An empty name would confine nothing, silently.
+                if (text.empty()) return "needs a directory; an empty name confines nothing";
+                try {
+                    (void)raster::confinement_root(text);
+                } catch (const std::exception& problem) {
+                    return problem.what();
+                }
+                return "";
+            },
+            ""))
         ->option_text("DIR");
 
     return run_exporter(app, options, argc, argv, [&] {
@@ -295,7 +307,7 @@ int main(int argc, char** argv) {
         } else if (!background.empty()) {
             view.background = colour_from_hex(background);
         }
-        if (!confine.empty()) plan.obj.confine = raster::confinement_root(confine);
+        if (app.count("--confine") > 0) plan.obj.confine = raster::confinement_root(confine);
         if (!max_memory.empty()) plan.obj.limits.max_memory = *memory_size(max_memory);
         if (!options.frames_dir.empty() && plan.frames == 0) {
             throw CLI::ValidationError("--frames-dir writes the frames of a turntable; add --turntable N");

@@ -1,5 +1,6 @@
 #include "terminal_preview.hpp"
 
+#include <raster/io/held_signals.hpp>
 #include <raster/io/kitty_graphics.hpp>
 #include <raster/io/png.hpp>
 
@@ -31,34 +32,9 @@ private:
     int fd_;
 };
 
-// The signal that came while the terminal was raw; static because a handler reaches nothing else.
-volatile std::sig_atomic_t held_signal = 0;
-extern "C" void hold_signal(int signal) { held_signal = signal; }
-
 // Ctrl-C, Ctrl-Z and hang-ups wait while the terminal is raw, on whichever thread they land,
 // and are raised again once it is restored (RawMode is destroyed first).
-class HeldSignals {
-public:
-    HeldSignals() {
-        struct sigaction hold{};
-        hold.sa_handler = hold_signal;
-        sigemptyset(&hold.sa_mask);
-        for (std::size_t k = 0; k < kSignals.size(); ++k) ::sigaction(kSignals[k], &hold, &before_[k]);
-    }
-    ~HeldSignals() {
-        for (std::size_t k = 0; k < kSignals.size(); ++k) ::sigaction(kSignals[k], &before_[k], nullptr);
-        if (const int signal = held_signal; signal != 0) {
-            held_signal = 0;
-            ::raise(signal);
-        }
-    }
-    HeldSignals(const HeldSignals&) = delete;
-    HeldSignals& operator=(const HeldSignals&) = delete;
-
-private:
-    static constexpr std::array<int, 5> kSignals{SIGINT, SIGQUIT, SIGTERM, SIGHUP, SIGTSTP};
-    std::array<struct sigaction, 5> before_{};
-};
+constexpr std::array<int, 5> kTerminalSignals{SIGINT, SIGQUIT, SIGTERM, SIGHUP, SIGTSTP};
 
 // Raw input (no line editing, no echo) for the answer, and the terminal's own settings back after.
 class RawMode {
@@ -98,14 +74,14 @@ bool write_all(int fd, std::string_view bytes) {
 raster::KittyAnswer ask_terminal(int tty, std::chrono::milliseconds timeout) {
     // Our process id keeps the query's id apart from another program's on the same terminal.
     const std::uint32_t id = 0x52000000U | (static_cast<std::uint32_t>(::getpid()) & 0xFFFFFFU);
-    const HeldSignals held;
+    const raster::HeldSignals held(kTerminalSignals);
     const RawMode raw(tty);
     if (!raw.active() || !write_all(1, raster::kitty_query(id))) return raster::KittyAnswer::incomplete;
     std::string answer;
     const auto deadline = std::chrono::steady_clock::now() + timeout;
     for (;;) {
         const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
-        if (left.count() <= 0 || held_signal != 0) return raster::KittyAnswer::incomplete;
+        if (left.count() <= 0 || held.arrived()) return raster::KittyAnswer::incomplete;
         pollfd wait{tty, POLLIN, 0};
         const int ready = ::poll(&wait, 1, static_cast<int>(left.count()));
         if (ready < 0 && errno == EINTR) continue;

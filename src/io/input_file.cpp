@@ -1,13 +1,13 @@
 #include <raster/io/input_file.hpp>
 
+#include "io/open_beneath.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
-#include <linux/openat2.h>
-#include <sys/syscall.h>
 #include <stdexcept>
 #include <sys/stat.h>
 #include <system_error>
@@ -43,52 +43,61 @@ FileIdentity identity_from(const struct stat& status) {
     return {static_cast<std::uint64_t>(status.st_dev), static_cast<std::uint64_t>(status.st_ino)};
 }
 
-// Opens `path` below the confinement root so that nothing outside it can be reached, not even
-// through a link or a directory swapped in after the check: the kernel's RESOLVE_BENEATH where
-// there is one, else the resolved path with no link followed at its last step.
-int open_confined(const fs::path& path, const fs::path& root, int flags) {
+std::string outside(const fs::path& root) { return "lies outside '" + printable(root.string()) + "', where reading is confined"; }
+
+// Finds `path` below the confinement root so that nothing outside it can be reached, not even
+// through a link or a directory swapped in after the check; an O_PATH descriptor, or -1.
+int locate_confined(const fs::path& path, const fs::path& root) {
     std::error_code error;
     const fs::path resolved = fs::weakly_canonical(fs::absolute(path, error), error);
     const fs::path relative = error ? fs::path() : resolved.lexically_relative(root);
     // The same words whether or not such a file exists outside: they tell an uploader nothing.
-    if (relative.empty() || *relative.begin() == "..") refuse("lies outside '" + printable(root.string()) + "', where reading is confined");
+    if (relative.empty() || *relative.begin() == "..") refuse(outside(root));
     const int directory = ::open(root.c_str(), O_PATH | O_DIRECTORY | O_CLOEXEC);
     if (directory < 0) refuse(reason_from_errno(errno));
-    open_how how{};
-    how.flags = static_cast<std::uint64_t>(flags);
-    how.resolve = RESOLVE_BENEATH | RESOLVE_NO_SYMLINKS | RESOLVE_NO_MAGICLINKS;
-    long descriptor = ::syscall(SYS_openat2, directory, relative.c_str(), &how, sizeof how);
+    const int descriptor = detail::open_beneath(directory, relative, detail::BeneathResolution::kernel_first);
     const int opened_errno = errno;
     ::close(directory);
-    if (descriptor < 0 && (opened_errno == ENOSYS || opened_errno == EPERM)) {
-        descriptor = ::open(resolved.c_str(), flags | O_NOFOLLOW);  // an older kernel, or a sandbox that hides openat2
-    } else if (descriptor < 0 && (opened_errno == EXDEV || opened_errno == ELOOP)) {
-        refuse("lies outside '" + printable(root.string()) + "', where reading is confined");
-    } else {
-        errno = opened_errno;
+    if (descriptor < 0 && (opened_errno == EXDEV || opened_errno == ELOOP)) refuse(outside(root));
+    errno = opened_errno;
+    return descriptor;
+}
+
+// Opens for reading the regular file that `located` (O_PATH, which opens nothing) names, once
+// its kind is checked: opening a device runs its driver (a tape rewinds), a FIFO may wait.
+int open_checked(int located, struct stat& before) {
+    if (::fstat(located, &before) != 0) refuse(reason_from_errno(errno));
+    if (!S_ISREG(before.st_mode)) refuse(kind_of(before.st_mode));
+    const std::string reopen = "/proc/self/fd/" + std::to_string(located);
+    // O_NONBLOCK: should anything but the checked file answer, opening it must not wait.
+    const int descriptor = ::open(reopen.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
+    if (descriptor < 0 && errno == ENOENT && ::access("/proc/self/fd", F_OK) != 0) {
+        refuse("cannot be opened: /proc is not mounted, and raster opens a file through it once its kind is checked");
     }
-    return static_cast<int>(descriptor);
+    if (descriptor < 0) refuse(reason_from_errno(errno));
+    return descriptor;
 }
 
 }  // namespace
 
 InputFile::InputFile(const fs::path& path, const InputRules& rules) : record_{path, {}, rules.role} {
-    // The kind is checked before opening: opening a device runs its driver (a tape rewinds).
+    // Found with O_PATH, which opens nothing, so that the kind is known before the file is opened.
+    const int located = rules.confine.empty() ? ::open(path.c_str(), O_PATH | O_CLOEXEC) : locate_confined(path, rules.confine);
+    if (located < 0) refuse(reason_from_errno(errno));
     struct stat before {};
-    if (rules.confine.empty()) {
-        if (::stat(path.c_str(), &before) != 0) refuse(reason_from_errno(errno));
-        if (!S_ISREG(before.st_mode)) refuse(kind_of(before.st_mode));
+    try {
+        descriptor_ = open_checked(located, before);
+    } catch (...) {
+        ::close(located);
+        throw;
     }
-    // O_NONBLOCK: should a FIFO take the file's place meanwhile, opening it must not wait.
-    const int flags = O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY;
-    descriptor_ = rules.confine.empty() ? ::open(path.c_str(), flags) : open_confined(path, rules.confine, flags);
-    if (descriptor_ < 0) refuse(reason_from_errno(errno));
+    ::close(located);
     try {
         struct stat status {};
         if (::fstat(descriptor_, &status) != 0) refuse(reason_from_errno(errno));
         if (!S_ISREG(status.st_mode)) refuse(kind_of(status.st_mode));
         record_.identity = identity_from(status);
-        if (rules.confine.empty() && record_.identity != identity_from(before)) refuse("changed while it was being opened");
+        if (record_.identity != identity_from(before)) refuse("changed while it was being opened");
         size_ = static_cast<std::uintmax_t>(status.st_size);
         if (size_ > rules.max_bytes) {
             refuse("is " + in_mib(size_) + ", more than the " + in_mib(rules.max_bytes) + " allowed");
@@ -241,21 +250,57 @@ fs::path confinement_root(const fs::path& path) {
     return root;
 }
 
-std::string printable(std::string_view text, std::size_t limit) {
-    std::size_t cut = std::min(text.size(), limit);
-    while (cut < text.size() && cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;  // whole UTF-8 characters
-    std::string shown;
-    for (const char c : text.substr(0, cut)) {
-        const auto byte = static_cast<unsigned char>(c);
-        if (byte < 0x20 || byte == 0x7f) {
-            char escaped[5];
-            std::snprintf(escaped, sizeof escaped, "\\x%02x", byte);
-            shown += escaped;
-        } else {
-            shown += c;
-        }
+namespace {
+
+// The length of the well-formed UTF-8 character at the start of `text` (Unicode's table 3-7:
+// no overlong forms, surrogates or code points past U+10FFFF), or 0 when it starts with none.
+std::size_t utf8_length(std::string_view text) {
+    const auto byte = [&](std::size_t k) { return k < text.size() ? static_cast<unsigned char>(text[k]) : 0U; };
+    const auto within = [](unsigned value, unsigned low, unsigned high) { return value >= low && value <= high; };
+    const unsigned lead = byte(0);
+    if (lead < 0x80) return 1;
+    if (within(lead, 0xC2, 0xDF)) return within(byte(1), 0x80, 0xBF) ? 2 : 0;
+    if (within(lead, 0xE0, 0xEF)) {
+        const unsigned low = lead == 0xE0 ? 0xA0 : 0x80, high = lead == 0xED ? 0x9F : 0xBF;
+        return within(byte(1), low, high) && within(byte(2), 0x80, 0xBF) ? 3 : 0;
     }
-    if (cut < text.size()) shown += "...";
+    if (within(lead, 0xF0, 0xF4)) {
+        const unsigned low = lead == 0xF0 ? 0x90 : 0x80, high = lead == 0xF4 ? 0x8F : 0xBF;
+        return within(byte(1), low, high) && within(byte(2), 0x80, 0xBF) && within(byte(3), 0x80, 0xBF) ? 4 : 0;
+    }
+    return 0;
+}
+
+void append_escaped(std::string& shown, std::string_view bytes) {
+    for (const char c : bytes) {
+        char escaped[5];
+        std::snprintf(escaped, sizeof escaped, "\\x%02x", static_cast<unsigned char>(c));
+        shown += escaped;
+    }
+}
+
+}  // namespace
+
+std::string printable(std::string_view text, std::size_t limit) {
+    std::string shown;
+    std::size_t at = 0;
+    while (at < text.size()) {
+        const std::size_t length = utf8_length(text.substr(at));
+        // A byte that starts no character stands alone, as \xNN, and the next byte starts afresh.
+        const std::size_t step = std::max<std::size_t>(length, 1);
+        if (step > limit - std::min(at, limit)) break;  // whole characters only
+        const std::string_view piece = text.substr(at, step);
+        const auto lead = static_cast<unsigned char>(piece[0]);
+        // C0 and C1 controls (U+0080-U+009F is C2 80-C2 9F) steer a terminal: CSI is C2 9B.
+        const bool control = lead < 0x20 || lead == 0x7f || (lead == 0xC2 && length == 2 && static_cast<unsigned char>(piece[1]) < 0xA0);
+        if (length == 0 || control) {
+            append_escaped(shown, piece);
+        } else {
+            shown += piece;
+        }
+        at += step;
+    }
+    if (at < text.size()) shown += "...";
     return shown;
 }
 

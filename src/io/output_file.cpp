@@ -1,8 +1,9 @@
 #include <raster/io/output_file.hpp>
 
+#include <raster/io/held_signals.hpp>
+
 #include <array>
 #include <cerrno>
-#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
@@ -78,24 +79,6 @@ fs::path checked_destination(const fs::path& path, OutputPolicy policy, std::spa
     return target;
 }
 
-// Holds SIGINT, SIGTERM and SIGHUP for its lifetime; a signal that came meanwhile is
-// delivered when it ends.
-class InterruptsHeld {
-public:
-    InterruptsHeld() {
-        sigset_t held;
-        sigemptyset(&held);
-        for (const int signal : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&held, signal);
-        ::pthread_sigmask(SIG_BLOCK, &held, &previous_);
-    }
-    ~InterruptsHeld() { ::pthread_sigmask(SIG_SETMASK, &previous_, nullptr); }
-    InterruptsHeld(const InterruptsHeld&) = delete;
-    InterruptsHeld& operator=(const InterruptsHeld&) = delete;
-
-private:
-    sigset_t previous_{};
-};
-
 // A new file with a short random name beside the target (so names up to the filesystem's
 // limit still work), removed on destruction unless released.
 class TemporaryFile {
@@ -160,7 +143,7 @@ void check_output_path(const fs::path& path, OutputPolicy policy, std::span<cons
     std::optional<struct stat> existing;
     const fs::path target = checked_destination(path, policy, inputs, existing);
     // Probe that the directory takes a new file; interrupts wait until the probe is gone.
-    const InterruptsHeld held;
+    const HeldSignals held;
     const TemporaryFile probe(target, 0600);
 }
 
@@ -168,7 +151,8 @@ void write_output_file(const fs::path& path, std::span<const std::uint8_t> bytes
                        std::span<const InputRecord> inputs) {
     std::optional<struct stat> existing;
     const fs::path target = checked_destination(path, policy, inputs, existing);
-    const InterruptsHeld held;
+    // Process-wide: a signal landing on any worker thread waits as well.
+    const HeldSignals held;
     TemporaryFile file(target, existing ? 0600 : 0666);
     if (existing) {
         // Keep the replaced file's owner (where allowed) and mode.

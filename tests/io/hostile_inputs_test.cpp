@@ -211,7 +211,24 @@ TEST(HostileInputs, ConfineKeepsEveryReadInsideTheDirectory) {
     EXPECT_EQ(texture_outside.err, "render: private.png: lies outside '" + root + "', where reading is confined\n");
     EXPECT_FALSE(std::filesystem::exists(dir / "loose.webp"));
     EXPECT_FALSE(std::filesystem::exists(dir / "t.webp"));
-    EXPECT_EQ(run(kRender, {"loose.obj", "--confine", "nowhere"}, dir.path()).err, "render: 'nowhere' does not exist\n");
+}
+
+TEST(HostileInputs, AnEmptyOrMissingConfineDirectoryIsAUsageErrorAndNothingIsRead) {
+    const ScratchDir dir;
+    test_support::write_text(dir / "loose.obj", test_support::textured_cube_obj("", ""));
+    test_support::write_text(dir / "a-file", "");
+    const std::pair<std::vector<std::string>, std::string> cases[] = {
+        {{"loose.obj", "--confine", ""}, "render: --confine: needs a directory; an empty name confines nothing (see --help)\n"},
+        {{"loose.obj", "--confine="}, "render: --confine: 1 required TEXT missing (see --help)\n"},
+        {{"loose.obj", "--confine", "nowhere"}, "render: --confine: 'nowhere' does not exist (see --help)\n"},
+        {{"loose.obj", "--confine", "a-file"}, "render: --confine: 'a-file' is not a directory (see --help)\n"},
+    };
+    for (const auto& [arguments, message] : cases) {
+        const auto result = run(kRender, arguments, dir.path());
+        EXPECT_EQ(result.exit_code, 2) << ::testing::PrintToString(arguments);
+        EXPECT_EQ(result.err, message);
+    }
+    EXPECT_EQ(dir.entries(), (std::vector<std::string>{"a-file", "loose.obj"})) << "nothing was drawn or written";
 }
 
 TEST(HostileInputs, ATruncatedTextureIsAWarningAndTheMaterialsColourOrAnErrorThroughTexture) {

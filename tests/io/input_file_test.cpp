@@ -7,7 +7,9 @@
 
 #include <chrono>
 #include <fcntl.h>
+#include <sys/inotify.h>
 #include <string>
+#include <utility>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -141,4 +143,55 @@ TEST(InputFile, PrintableEscapesControlBytesAndKeepsUtf8) {
     EXPECT_EQ(raster::printable("a\tb\x1b[31m"), "a\\x09b\\x1b[31m");
     EXPECT_EQ(raster::printable("caf\xc3\xa9"), "caf\xc3\xa9");
     EXPECT_EQ(raster::printable(std::string(100, 'x'), 10), "xxxxxxxxxx...");
+}
+
+TEST(InputFile, PrintableEscapesC1ControlsAndMalformedUtf8ByteByByte) {
+    const std::pair<std::string, std::string> cases[] = {
+        {"\xc2\x9b" "31m", "\\xc2\\x9b31m"},                           // CSI, U+009B
+        {"\xc2\x9d" "0;x\xc2\x9c", "\\xc2\\x9d0;x\\xc2\\x9c"},              // OSC ... ST
+        {"\xc2\x80\xc2\x9f\xc2\xa0", "\\xc2\\x80\\xc2\\x9f\xc2\xa0"},     // C1's ends; U+00A0 is kept
+        {"a\x80" "b", "a\\x80b"},                                      // a stray continuation byte
+        {"\xc0\xaf", "\\xc0\\xaf"},                                     // an overlong '/'
+        {"\xe0\x80\xaf", "\\xe0\\x80\\xaf"},                             // an overlong '/' in three bytes
+        {"\xed\xa0\x80", "\\xed\\xa0\\x80"},                             // a surrogate, U+D800
+        {"\xf4\x90\x80\x80", "\\xf4\\x90\\x80\\x80"},                     // past U+10FFFF
+        {"\xf5\xfe\xff", "\\xf5\\xfe\\xff"},                             // bytes UTF-8 never uses
+        {"\xe2\x82" "A", "\\xe2\\x82A"},                                 // a character cut short
+        {"caf\xc3", "caf\\xc3"},                                       // cut short at the end
+        {"\xe2\x82\xac \xf0\x9f\x98\x80 \xe4\xb8\xad", "\xe2\x82\xac \xf0\x9f\x98\x80 \xe4\xb8\xad"},  // euro, emoji, CJK kept
+    };
+    for (const auto& [text, shown] : cases) EXPECT_EQ(raster::printable(text), shown) << raster::printable(text);
+    // The cut falls between whole characters, a lone bad byte counting as one.
+    EXPECT_EQ(raster::printable("ab\xe2\x82\xac", 4), "ab...");
+    EXPECT_EQ(raster::printable("ab\xe2\x82\xac", 5), "ab\xe2\x82\xac");
+    EXPECT_EQ(raster::printable(std::string(50, '\x80'), 3), "\\x80\\x80\\x80...");
+    EXPECT_EQ(raster::printable("\xc2\x9bxyz", 2), "\\xc2\\x9b...");
+}
+
+TEST(InputFile, NothingIsOpenedBeforeItsKindIsCheckedInsideAConfinementOrNot) {
+    const ScratchDir dir;
+    std::filesystem::create_directory(dir / "jail");
+    ASSERT_EQ(::mkfifo((dir / "jail" / "pipe").c_str(), 0600), 0);
+    // inotify reports each open of the FIFO; kernels before 6.5 report O_PATH, which opens nothing, too.
+    const int events = ::inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
+    ASSERT_GE(events, 0);
+    ASSERT_GE(::inotify_add_watch(events, (dir / "jail" / "pipe").c_str(), IN_OPEN), 0);
+    const auto opens = [&] {
+        char buffer[4096];
+        int count = 0;
+        for (::ssize_t got; (got = ::read(events, buffer, sizeof buffer)) > 0;) count += static_cast<int>(got / sizeof(inotify_event));
+        return count;
+    };
+    const int located = ::open((dir / "jail" / "pipe").c_str(), O_PATH | O_CLOEXEC);
+    ::close(located);
+    const bool path_opens_count = opens() > 0;
+    raster::InputRules confined = rules();
+    confined.confine = raster::confinement_root(dir / "jail");
+    EXPECT_EQ(refusal(dir / "jail" / "pipe", confined), "is a FIFO, not a regular file");
+    EXPECT_EQ(refusal(dir / "jail" / "pipe"), "is a FIFO, not a regular file");
+    EXPECT_EQ(refusal(dir / "jail", confined), "is a directory, not a file");
+    const int seen = opens();
+    ::close(events);
+    if (path_opens_count) GTEST_SKIP() << "this kernel reports O_PATH as an open";
+    EXPECT_EQ(seen, 0) << "the FIFO was opened before it was refused";
 }

@@ -2,12 +2,15 @@
 
 #include "support/scratch.hpp"
 
+#include <chrono>
 #include <csignal>
 #include <gtest/gtest.h>
 #include <unistd.h>
 #include <stdexcept>
 #include <string>
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <thread>
 #include <vector>
 
 using raster::write_output_file;
@@ -159,4 +162,56 @@ TEST(OutputFile, ASignalWhileTheTemporaryFileExistsWaitsUntilTheNewFileIsInPlace
     if (!caught) GTEST_SKIP() << "the write finished before the temporary file was seen";
     EXPECT_EQ(dir.entries(), std::vector<std::string>{"out.webp"}) << "no temporary file is left";
     EXPECT_EQ(fs::file_size(dir / "out.webp"), big.size()) << "the signal waited for the new file";
+}
+
+TEST(OutputFile, ASignalOnAnyThreadWhileSeveralThreadsWriteLeavesEachOutputOldOrNewAndThenEndsTheProgram) {
+    const ScratchDir dir;
+    constexpr int kWriters = 3;
+    const auto output = [&](int k) { return dir / ("out-" + std::to_string(k) + ".webp"); };
+    for (int k = 0; k < kWriters; ++k) test_support::write_text(output(k), "old");
+    const std::size_t size = std::size_t{16} << 20;
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        std::signal(SIGTERM, SIG_DFL);
+        const std::vector<std::uint8_t> big(size, 'n');
+        std::vector<std::thread> threads;
+        // Idle threads take a signal the writers would block: held on the writing thread only, it ended the program mid-write.
+        for (int k = 0; k < 2; ++k) threads.emplace_back([] {
+            for (;;) ::pause();
+        });
+        // Writers that overlap without end: the signal must still get through once their writes are done.
+        for (int k = 0; k < kWriters; ++k) threads.emplace_back([&, k] {
+            for (;;) write_output_file(output(k), big);
+        });
+        for (std::thread& thread : threads) thread.join();
+        ::_exit(0);
+    }
+    bool writing = false;
+    for (int poll = 0; poll < 200000 && !writing; ++poll) {
+        for (const auto& entry : fs::directory_iterator(dir.path())) {
+            if (entry.path().filename().string().starts_with(".raster-")) writing = true;
+        }
+    }
+    for (int repeat = 0; repeat < 3; ++repeat) {
+        ::kill(child, SIGTERM);
+        ::usleep(1000);
+    }
+    int status = 0;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+    while (::waitpid(child, &status, WNOHANG) == 0) {
+        if (std::chrono::steady_clock::now() > deadline) {
+            ::kill(child, SIGKILL);
+            ::waitpid(child, &status, 0);
+            FAIL() << "the writes held the signal off for 30 s";
+        }
+        ::usleep(1000);
+    }
+    EXPECT_TRUE(writing) << "no temporary file was seen";
+    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM) << "status " << status;
+    EXPECT_EQ(dir.entries(), (std::vector<std::string>{"out-0.webp", "out-1.webp", "out-2.webp"})) << "no temporary file is left";
+    for (int k = 0; k < kWriters; ++k) {
+        const std::string text = read_text(output(k));
+        EXPECT_TRUE(text == "old" || (text.size() == size && text.find_first_not_of('n') == std::string::npos)) << output(k) << ": " << text.size() << " bytes";
+    }
 }

@@ -87,8 +87,9 @@ void for_each_line(std::string_view text, const std::string& name, std::size_t m
 // it is not an existing directory.
 [[nodiscard]] std::filesystem::path confinement_root(const std::filesystem::path& path);
 
-// Text for a message: control bytes as \xNN (UTF-8 kept), cut to at most `limit` bytes of
-// whole characters with "..." (quoted file content is cut; paths are shown whole).
+// Text for a message: C0 and C1 controls and every byte of what is not well-formed UTF-8 as
+// \xNN (other UTF-8 kept), cut to at most `limit` bytes of whole characters with "..."
+// (quoted file content is cut; paths are shown whole).
 [[nodiscard]] std::string printable(std::string_view text, std::size_t limit = std::string_view::npos);
 
 }  // namespace raster
