@@ -427,7 +427,8 @@ void add_animation_options(CLI::App& app, int& fps, ExportOptions& options) {
                  "Leave an animation that is already complete (the same size and frames, or range) as it is and render "
                  "nothing; with --frames-dir, render only the frames whose files are missing; with render --output-dir, "
                  "only the models whose pictures are missing. Outputs are written "
-                 "atomically, so an interrupted run leaves no partial file to mistake for a finished one");
+                 "atomically, so an interrupted run leaves no partial file to mistake for a finished one; a link, a "
+                 "directory, or a file that is empty or does not decode under the name is not taken as finished");
 }
 
 namespace {

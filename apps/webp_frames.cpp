@@ -69,7 +69,8 @@ int main(int argc, char** argv) {
     std::string input;
     app.add_option("input", input, "The animated (or still) WebP file to read")->required()->option_text("FILE");
     std::string dir;
-    app.add_option("dir", dir, "Directory for the frames, made if missing; DIR/0000.png is frame 0")->required()->option_text("DIR");
+    app.add_option("dir", dir, "Directory for the frames, made if missing; DIR/0000.png is frame 0. Refused if any frame's "
+                   "file is there already; the frames appear together once all are written, or none do")->required()->option_text("DIR");
     ExportOptions options{""};
     app.add_flag("-q,--quiet", options.quiet, "Print nothing when all goes well");
 

@@ -28,6 +28,7 @@ using test_support::kWebpFrame;
 using test_support::run;
 using test_support::ScratchDir;
 
+#ifndef RASTER_TEST_ASAN
 namespace {
 
 // webp-frame run with its address space limited to `mebibytes` (RLIMIT_AS, through ulimit -v).
@@ -38,6 +39,7 @@ test_support::RunResult run_limited(std::uint64_t mebibytes, const std::vector<s
 }
 
 }  // namespace
+#endif
 
 
 TEST(WebpFrameApp, WritesFrameNAsTheWholePictureAPlayerShows) {
