@@ -432,7 +432,8 @@ void add_animation_options(CLI::App& app, int& fps, ExportOptions& options) {
                  "Leave an animation that is already complete (the same size and frames, or range) as it is and render "
                  "nothing; with --frames-dir, render only the frames whose files are missing; with render --output-dir, "
                  "only the models whose pictures are missing. Outputs are written "
-                 "atomically, so an interrupted run leaves no partial file to mistake for a finished one");
+                 "atomically, so an interrupted run leaves no partial file to mistake for a finished one; a link, a "
+                 "directory, or a file that is empty or does not decode under the name is not taken as finished");
 }
 
 namespace {
@@ -494,8 +495,12 @@ std::string export_frames(const CLI::App& app, const ExportOptions& options, int
     }
     const std::optional<raster::FrameRange> range = chosen_range(options, frames, fps);
     const int begin = range ? range->first : 0, end = range ? range->last + 1 : frames;
-    // Files are written atomically, so one that exists is a whole frame from an earlier run.
-    const auto skipped = [&](int i) { return options.skip_existing && std::filesystem::exists(frame_file(dir, i, frames), error); };
+    // Files are written atomically, so a PNG file that decodes is a whole frame from an earlier run.
+    std::vector<bool> kept_frames(static_cast<std::size_t>(end - begin));
+    for (int i = begin; i < end; ++i) {
+        kept_frames[static_cast<std::size_t>(i - begin)] = options.skip_existing && holds_finished_picture(frame_file(dir, i, frames), ImageFormat::png);
+    }
+    const auto skipped = [&](int i) { return kept_frames[static_cast<std::size_t>(i - begin)]; };
     for (int i = begin; i < end; ++i) {
         if (!skipped(i)) raster::check_output_path(frame_file(dir, i, frames), options.policy, options.inputs);
     }
@@ -536,8 +541,8 @@ std::string export_animation(const CLI::App& app, const ExportOptions& options, 
     const int spacing_ms = (1000 + fps / 2) / fps;
     raster::Framebuffer frame(options.width, options.height);
     std::vector<std::uint8_t> alpha;
-    std::error_code error;
-    const bool drawn_first = options.skip_existing && options.output != "-" && std::filesystem::is_regular_file(options.output, error);
+    // already_complete() decodes the file, so only what cannot be a finished one is ruled out here.
+    const bool drawn_first = options.skip_existing && options.output != "-" && is_nonempty_regular_file(options.output);
     if (drawn_first) {
         render(frame, begin, alpha);
         if (already_complete(options, range, end - begin, spacing_ms, frame)) {

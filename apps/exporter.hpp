@@ -9,6 +9,7 @@
 
 #include <CLI/CLI.hpp>
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <optional>
 #include <span>
@@ -162,6 +163,11 @@ std::string export_still(const CLI::App& app, const ExportOptions& options,
 // --fps 1..95, with the browsers' 10 ms rule in its help, --encoder parallel|anim,
 // --frames-dir DIR, --frame-range A..B and --skip-existing.
 void add_animation_options(CLI::App& app, int& fps, ExportOptions& options);
+// A regular file (not a link) that is not empty.
+[[nodiscard]] bool is_nonempty_regular_file(const std::filesystem::path& path);
+// --skip-existing: whether `path` is a finished picture of `format`, a regular file (not a link)
+// that is not empty and decodes whole; anything else under that name is drawn again.
+[[nodiscard]] bool holds_finished_picture(const std::filesystem::path& path, ImageFormat format);
 // Reads "A..B" or "A:B" (decimal, 0 <= A <= B); false for anything else.
 bool parse_frame_range(const std::string& text, int& first, int& last);
 // Renders `frames` frames at `fps` into a looping animation, writes it and returns the line to

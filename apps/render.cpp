@@ -364,11 +364,8 @@ int main(int argc, char** argv) {
         models.insert(models.end(), more_models.begin(), more_models.end());
         std::vector<BatchJob> jobs = plan_batch(models, output_dir, extension);
         std::size_t kept = 0;
-        if (options.skip_existing) {  // pictures are written atomically: one that exists is whole
-            kept = std::erase_if(jobs, [](const BatchJob& job) {
-                std::error_code missing;
-                return std::filesystem::exists(job.output, missing);
-            });
+        if (options.skip_existing) {  // pictures are written atomically: one that decodes is whole
+            kept = std::erase_if(jobs, [&](const BatchJob& job) { return holds_finished_picture(job.output, format); });
         }
         std::error_code error;
         std::filesystem::create_directories(output_dir, error);

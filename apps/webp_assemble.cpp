@@ -16,10 +16,11 @@ int main(int argc, char** argv) {
                "  animated-scene --frame-range 0..179 a.webp\n"
                "  animated-scene --frame-range 180..359 b.webp\n"
                "  webp-assemble scene.webp a.webp b.webp    # the same frames as animated-scene scene.webp\n"
-               "  webp-assemble scene.webp part-*.webp");
+               "  webp-assemble scene.webp part-*.webp\n"
+               "  webp-assemble - part-*.webp | webpinfo -quiet -- -");
     configure_app(app);
     ExportOptions options{""};
-    app.add_option("output", options.output, "The whole animation to write; never one of the parts")->required()->option_text("OUT.webp");
+    app.add_option("output", options.output, "The whole animation to write, replaced whole or not at all; never one of the parts; - writes to standard output")->required()->option_text("OUT.webp");
     std::vector<std::string> names;
     app.add_option("parts", names, "The parts, each made with --frame-range")->required()->option_text("PART...");
     app.add_flag("-q,--quiet", options.quiet, "Print nothing when all goes well");
@@ -34,9 +35,11 @@ int main(int argc, char** argv) {
                 throw std::runtime_error("'" + raster::printable(name) + "' " + problem.what());
             }
         }
+        options.format = ImageFormat::webp;
+        check_output(app, options);
         const std::vector<std::uint8_t> bytes = raster::assemble_parts(std::move(parts));
-        raster::write_output_file(options.output, bytes, options.policy, options.inputs);
-        return "Wrote " + raster::printable(options.output) + ": " + std::to_string(raster::webp_frame_count(bytes)) + " frames from " +
+        deliver(options, bytes);
+        return "Wrote " + (options.output == "-" ? std::string("standard output") : raster::printable(options.output)) + ": " + std::to_string(raster::webp_frame_count(bytes)) + " frames from " +
                std::to_string(names.size()) + (names.size() == 1 ? " part, " : " parts, ") + std::to_string(bytes.size()) + " bytes";
     });
 }

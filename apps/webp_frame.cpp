@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include <optional>
+#include <span>
 #include <stdexcept>
 
 int main(int argc, char** argv) {
@@ -28,23 +28,23 @@ int main(int argc, char** argv) {
         // The input's identity before it is read, so that naming it as the output fails at once.
         if (raster::FileIdentity identity; raster::identity_of(input, identity)) options.inputs.push_back({input, identity, "animation"});
         check_output(app, options);
-        std::optional<raster::Framebuffer> found;
-        std::vector<std::uint8_t> alpha;
-        int seen = 0;
-        const raster::WebpInfo info = raster::for_each_webp_frame(input, [&](const raster::DecodedFrame& frame) {
-            if (seen++ < index) return true;
-            found = frame.image;
-            // An opaque frame stays opaque; a transparent one keeps its alpha.
-            if (std::any_of(frame.alpha.begin(), frame.alpha.end(), [](std::uint8_t a) { return a != 255; })) alpha = frame.alpha;
-            return false;
-        }, &options.inputs);
-        if (!found) {
+        // The frame is encoded from the reader's canvas, not a copy: memory is one canvas and one frame.
+        raster::WebpFrameReader reader(input, &options.inputs);
+        const raster::WebpInfo& info = reader.info();
+        const raster::DecodedFrame* found = nullptr;
+        for (int seen = 0; seen <= index; ++seen) {
+            if ((found = reader.next()) == nullptr) break;
+        }
+        if (found == nullptr) {
             throw std::runtime_error("'" + input + "' has " + std::to_string(info.frame_count) +
                                      " frame(s), numbered 0.." + std::to_string(info.frame_count - 1));
         }
-        preview(app, options, *found, alpha);
-        const std::vector<std::uint8_t> bytes = options.image_format() == ImageFormat::png ? raster::encode_png(*found, alpha)
-                                                                                          : raster::encode_webp_still(*found, options.effort, alpha);
+        // An opaque frame stays opaque; a transparent one keeps its alpha.
+        const bool opaque = std::all_of(found->alpha.begin(), found->alpha.end(), [](std::uint8_t a) { return a == 255; });
+        const std::span<const std::uint8_t> alpha = opaque ? std::span<const std::uint8_t>() : std::span<const std::uint8_t>(found->alpha);
+        preview(app, options, found->image, alpha);
+        const std::vector<std::uint8_t> bytes = options.image_format() == ImageFormat::png ? raster::encode_png(found->image, alpha)
+                                                                                          : raster::encode_webp_still(found->image, options.effort, alpha);
         deliver(options, bytes);
         return "Wrote " + (options.output == "-" ? std::string("standard output") : raster::printable(options.output)) + ": frame " +
                std::to_string(index) + " of " + raster::printable(input) + ", " + std::to_string(info.width) + "x" +

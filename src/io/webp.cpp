@@ -1,8 +1,9 @@
-// The only file that includes libwebp.
+// Encoding WebP stills and animations, and decoding a still; webp_reader.cpp decodes animations
+// frame by frame and webp_parts.cpp joins parts.
 #include <raster/io/webp.hpp>
-#include <raster/io/webp_parts.hpp>
 
 #include "io/task_pool.hpp"
+#include "io/webp_chunks.hpp"
 
 #include <algorithm>
 #include <deque>
@@ -16,7 +17,6 @@
 #include <string>
 #include <string_view>
 #include <webp/decode.h>
-#include <webp/demux.h>
 #include <webp/encode.h>
 #include <webp/mux.h>
 
@@ -80,32 +80,6 @@ struct Picture {
     Picture(const Picture&) = delete;
     Picture& operator=(const Picture&) = delete;
 };
-
-std::vector<std::uint8_t> read_webp_file(const std::filesystem::path& path, std::vector<InputRecord>* sources) {
-    InputRules rules;
-    rules.role = "animation";
-    rules.max_bytes = kMaxWebpFileBytes;
-    rules.signature = looks_like_webp;
-    rules.signature_bytes = 12;
-    rules.expected = "a WebP file";
-    try {
-        return read_input_file(path, rules, sources);
-    } catch (const std::runtime_error& problem) {
-        throw std::runtime_error("'" + printable(path.string()) + "' " + problem.what());
-    }
-}
-
-// Drops the alpha channel of an RGBA buffer that libwebp decoded.
-Framebuffer framebuffer_from_rgba(const std::uint8_t* rgba, int width, int height) {
-    const auto pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
-    std::vector<std::uint8_t> rgb(pixels * 3);
-    for (std::size_t i = 0; i < pixels; ++i) {
-        rgb[i * 3] = rgba[i * 4];
-        rgb[i * 3 + 1] = rgba[i * 4 + 1];
-        rgb[i * 3 + 2] = rgba[i * 4 + 2];
-    }
-    return {width, height, std::move(rgb)};
-}
 
 // The lossless bytes of one picture: a whole frame, or the rectangle of it that changed.
 // `channels` is 3 for RGB, 4 for RGBA whose transparent pixels show the frame below.
@@ -203,7 +177,8 @@ struct AnimationEncoder::State {
     std::optional<Framebuffer> previous;
     std::unique_ptr<detail::TaskPool<EncodedFrame>> pool;
     std::deque<std::future<EncodedFrame>> in_flight;
-    WebPMux* mux = nullptr;
+    // The file so far, frames appended in one pass: libwebp's muxer walks its list per frame.
+    std::optional<detail::AnimationAssembler> assembled;
 
     State(int w, int h, int spacing, AnimationSettings settings)
         : width(w), height(h), frame_spacing_ms(spacing), config(lossless_config(settings.effort)), path(settings.path) {
@@ -230,8 +205,7 @@ struct AnimationEncoder::State {
             threads = settings.threads > 0 ? std::min(static_cast<std::size_t>(settings.threads), cores) : cores;
             try_blending = settings.effort == Effort::max;
             pool = std::make_unique<detail::TaskPool<EncodedFrame>>(threads);
-            mux = WebPMuxNew();
-            if (mux == nullptr) throw std::runtime_error("cannot start the WebP muxer");
+            assembled.emplace(width, height, 0xFF000000U, 0);  // opaque black background, loop forever
             return;
         }
         if (settings.tuning) config.method = settings.tuning->method, config.quality = settings.tuning->quality;
@@ -248,7 +222,6 @@ struct AnimationEncoder::State {
         pool.reset();  // finishes the encodes still queued, then stops its threads
         in_flight.clear();
         WebPAnimEncoderDelete(encoder);
-        WebPMuxDelete(mux);
     }
     State(const State&) = delete;
     State& operator=(const State&) = delete;
@@ -320,29 +293,24 @@ struct AnimationEncoder::State {
     void collect_oldest() {
         const EncodedFrame encoded = in_flight.front().get();
         in_flight.pop_front();
-        WebPMuxFrameInfo info{};
-        info.bitstream = {encoded.bytes.data(), encoded.bytes.size()};
-        info.x_offset = encoded.region.x;
-        info.y_offset = encoded.region.y;
-        info.duration = frame_spacing_ms;
-        info.id = WEBP_CHUNK_ANMF;
-        info.dispose_method = WEBP_MUX_DISPOSE_NONE;
-        info.blend_method = encoded.blend ? WEBP_MUX_BLEND : WEBP_MUX_NO_BLEND;  // transparent pixels keep what was there
-        if (WebPMuxPushFrame(mux, &info, 1) != WEBP_MUX_OK) throw std::runtime_error("cannot add a frame to the animation");
+        detail::AnimationFrame frame;
+        frame.x = encoded.region.x;
+        frame.y = encoded.region.y;
+        frame.width = encoded.region.width;
+        frame.height = encoded.region.height;
+        frame.duration_ms = frame_spacing_ms;
+        frame.blend = encoded.blend;  // transparent pixels keep what was there
+        frame.image = detail::picture_in(std::span<const std::uint8_t>(encoded.bytes).subspan(12));  // the still's VP8L chunk
+        WebPBitstreamFeatures features;
+        if (frame.image.empty() || WebPGetFeatures(frame.image.data(), frame.image.size(), &features) != VP8_STATUS_OK) {
+            throw std::runtime_error("cannot add a frame to the animation");
+        }
+        assembled->add_frame(frame, features.has_alpha != 0);
     }
 
     std::vector<std::uint8_t> assemble_parallel() {
         while (!in_flight.empty()) collect_oldest();
-        const WebPMuxAnimParams params{0xFF000000U, 0};  // opaque black background, loop forever
-        if (WebPMuxSetAnimationParams(mux, &params) != WEBP_MUX_OK || WebPMuxSetCanvasSize(mux, width, height) != WEBP_MUX_OK) {
-            throw std::runtime_error("cannot set the animation's canvas");
-        }
-        WebPData data;
-        WebPDataInit(&data);
-        if (WebPMuxAssemble(mux, &data) != WEBP_MUX_OK) throw std::runtime_error("cannot assemble the animation");
-        std::vector<std::uint8_t> bytes(data.bytes, data.bytes + data.size);
-        WebPDataClear(&data);
-        return bytes;
+        return std::move(*assembled).finish();
     }
 };
 
@@ -404,40 +372,6 @@ std::uintmax_t AnimationWriter::finish() {
     return bytes.size();
 }
 
-WebpInfo for_each_webp_frame(const std::filesystem::path& path,
-                             const std::function<bool(const DecodedFrame&)>& visit, std::vector<InputRecord>* sources) {
-    const std::vector<std::uint8_t> bytes = read_webp_file(path, sources);
-    const WebPData data{bytes.data(), bytes.size()};
-    WebPAnimDecoderOptions options;
-    if (!WebPAnimDecoderOptionsInit(&options)) throw std::runtime_error("libwebp version mismatch");
-    options.color_mode = MODE_RGBA;
-    options.use_threads = 0;
-    const std::unique_ptr<WebPAnimDecoder, void (*)(WebPAnimDecoder*)> decoder(
-        WebPAnimDecoderNew(&data, &options), WebPAnimDecoderDelete);
-    WebPAnimInfo info;
-    if (!decoder || !WebPAnimDecoderGetInfo(decoder.get(), &info)) {
-        throw std::runtime_error("'" + printable(path.string()) + "' is not a WebP file raster can decode");
-    }
-    const WebpInfo result{static_cast<int>(info.canvas_width), static_cast<int>(info.canvas_height),
-                          static_cast<int>(info.frame_count)};
-    int previous_end_ms = 0;
-    while (WebPAnimDecoderHasMoreFrames(decoder.get())) {
-        std::uint8_t* rgba = nullptr;
-        int end_ms = 0;
-        if (!WebPAnimDecoderGetNext(decoder.get(), &rgba, &end_ms)) {
-            throw std::runtime_error("'" + printable(path.string()) + "' has a corrupt frame");
-        }
-        const auto pixels = static_cast<std::size_t>(result.width) * static_cast<std::size_t>(result.height);
-        std::vector<std::uint8_t> alpha(pixels);
-        for (std::size_t i = 0; i < pixels; ++i) alpha[i] = rgba[i * 4 + 3];
-        const DecodedFrame frame{framebuffer_from_rgba(rgba, result.width, result.height), previous_end_ms,
-                                 end_ms - previous_end_ms, std::move(alpha)};
-        previous_end_ms = end_ms;
-        if (!visit(frame)) break;
-    }
-    return result;
-}
-
 bool looks_like_webp(std::span<const std::uint8_t> bytes) noexcept {
     constexpr std::string_view riff = "RIFF", webp = "WEBP";
     const auto matches = [&](std::size_t at, std::string_view tag) {
@@ -460,171 +394,6 @@ Framebuffer decode_webp_still(std::span<const std::uint8_t> bytes, std::size_t m
     if (!rgb) throw std::runtime_error("corrupt WebP image data");
     const std::size_t size = static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3;
     return {width, height, std::vector<std::uint8_t>(rgb.get(), rgb.get() + size)};
-}
-
-DecodedWebp read_webp(const std::filesystem::path& path) {
-    DecodedWebp result{0, 0, {}};
-    const WebpInfo info = for_each_webp_frame(path, [&](const DecodedFrame& frame) {
-        result.frames.push_back(frame);
-        return true;
-    });
-    result.width = info.width;
-    result.height = info.height;
-    return result;
-}
-
-namespace {
-
-constexpr const char* kRangeChunk = "RNGE";
-
-using MuxPointer = std::unique_ptr<WebPMux, void (*)(WebPMux*)>;
-
-MuxPointer mux_of(std::span<const std::uint8_t> bytes, const std::string& name) {
-    const WebPData data{bytes.data(), bytes.size()};
-    MuxPointer mux(WebPMuxCreate(&data, 0), WebPMuxDelete);
-    if (!mux) throw std::runtime_error(name + " is not a WebP file");
-    return mux;
-}
-
-int frames_in(const WebPMux* mux) {
-    int frames = 0;
-    if (WebPMuxNumChunks(mux, WEBP_CHUNK_ANMF, &frames) != WEBP_MUX_OK) return 0;
-    return frames;
-}
-
-std::optional<FrameRange> range_in(const WebPMux* mux) {
-    WebPData chunk;
-    if (WebPMuxGetChunk(mux, kRangeChunk, &chunk) != WEBP_MUX_OK || chunk.size != 16) return std::nullopt;
-    const auto word = [&](std::size_t k) {
-        std::uint32_t value = 0;
-        for (std::size_t b = 0; b < 4; ++b) value |= static_cast<std::uint32_t>(chunk.bytes[k * 4 + b]) << (8 * b);
-        return value;
-    };
-    const std::uint32_t first = word(0), last = word(1), total = word(2), spacing = word(3);
-    if (!(first <= last && last < total && total <= static_cast<std::uint32_t>(std::numeric_limits<int>::max()))) return std::nullopt;
-    if (!(spacing >= 1 && spacing <= static_cast<std::uint32_t>(kMaxFrameSpacingMs))) return std::nullopt;
-    return FrameRange{static_cast<int>(first), static_cast<int>(last), static_cast<int>(total), static_cast<int>(spacing)};
-}
-
-std::string frames_text(int first, int last) {
-    return first == last ? "frame " + std::to_string(first) : "frames " + std::to_string(first) + ".." + std::to_string(last);
-}
-
-std::string in_no_part(int first, int last) { return frames_text(first, last) + (first == last ? " is" : " are") + " in no part"; }
-
-}  // namespace
-
-std::vector<std::uint8_t> mark_frame_range(std::span<const std::uint8_t> animation, FrameRange range) {
-    const MuxPointer mux = mux_of(animation, "the animation");
-    std::uint8_t words[16];
-    const std::uint32_t values[4] = {static_cast<std::uint32_t>(range.first), static_cast<std::uint32_t>(range.last),
-                                     static_cast<std::uint32_t>(range.total), static_cast<std::uint32_t>(range.spacing_ms)};
-    for (std::size_t k = 0; k < 16; ++k) words[k] = static_cast<std::uint8_t>(values[k / 4] >> (8 * (k % 4)));
-    const WebPData chunk{words, sizeof words};
-    WebPData data;
-    WebPDataInit(&data);
-    if (WebPMuxSetChunk(mux.get(), kRangeChunk, &chunk, 1) != WEBP_MUX_OK || WebPMuxAssemble(mux.get(), &data) != WEBP_MUX_OK) {
-        throw std::runtime_error("cannot mark the animation's frame range");
-    }
-    std::vector<std::uint8_t> bytes(data.bytes, data.bytes + data.size);
-    WebPDataClear(&data);
-    return bytes;
-}
-
-std::optional<FrameRange> frame_range_of(std::span<const std::uint8_t> animation) {
-    const WebPData data{animation.data(), animation.size()};
-    const MuxPointer mux(WebPMuxCreate(&data, 0), WebPMuxDelete);
-    return mux ? range_in(mux.get()) : std::nullopt;
-}
-
-int webp_frame_count(std::span<const std::uint8_t> webp) {
-    const MuxPointer mux = mux_of(webp, "the file");
-    const int frames = frames_in(mux.get());
-    return frames > 0 ? frames : 1;
-}
-
-std::vector<std::uint8_t> assemble_parts(std::vector<AnimationPart> parts) {
-    if (parts.empty()) throw std::runtime_error("no parts to assemble");
-    struct Opened {
-        const AnimationPart* part;
-        MuxPointer mux;
-        FrameRange range;
-    };
-    std::vector<Opened> opened;
-    for (const AnimationPart& part : parts) {
-        MuxPointer mux = mux_of(part.bytes, "'" + printable(part.name) + "'");
-        const std::optional<FrameRange> range = range_in(mux.get());
-        if (!range) throw std::runtime_error("'" + printable(part.name) + "' is not a part: it has no frame range (render it with --frame-range)");
-        opened.push_back({&part, std::move(mux), *range});
-    }
-    std::sort(opened.begin(), opened.end(), [](const Opened& a, const Opened& b) { return a.range.first < b.range.first; });
-    const Opened& head = opened.front();
-    int width = 0, height = 0;
-    if (WebPMuxGetCanvasSize(head.mux.get(), &width, &height) != WEBP_MUX_OK) throw std::runtime_error("'" + printable(head.part->name) + "' has no canvas");
-    const WebPMuxAnimParams params{0xFF000000U, 0};  // as AnimationEncoder writes: loop forever
-    const MuxPointer whole(WebPMuxNew(), WebPMuxDelete);
-    int next = 0;
-    const int spacing = head.range.spacing_ms;
-    for (const Opened& piece : opened) {
-        const std::string name = "'" + printable(piece.part->name) + "'";
-        int w = 0, h = 0;
-        if (WebPMuxGetCanvasSize(piece.mux.get(), &w, &h) != WEBP_MUX_OK || w != width || h != height) {
-            throw std::runtime_error(name + " is " + std::to_string(w) + "x" + std::to_string(h) + ", the others " + std::to_string(width) + "x" +
-                                     std::to_string(height));
-        }
-        if (piece.range.total != head.range.total) {
-            throw std::runtime_error(name + " is part of a clip of " + std::to_string(piece.range.total) + " frames, '" +
-                                     printable(head.part->name) + "' of " + std::to_string(head.range.total));
-        }
-        if (piece.range.first > next) throw std::runtime_error(in_no_part(next, piece.range.first - 1));
-        if (piece.range.first < next) throw std::runtime_error(name + " repeats " + frames_text(piece.range.first, std::min(next - 1, piece.range.last)));
-        if (piece.range.spacing_ms != spacing) {
-            throw std::runtime_error(name + " shows frames for " + std::to_string(piece.range.spacing_ms) + " ms, the others for " + std::to_string(spacing));
-        }
-        // libwebp's own encoder merges a repeated frame into the one before, lengthening it, so
-        // a part is checked by how long its frames last, not by how many it stores.
-        const int stored = std::max(1, frames_in(piece.mux.get()));  // a part of one stored frame is a still
-        const std::int64_t expected_ms = std::int64_t{piece.range.count()} * spacing;
-        std::int64_t lasts_ms = 0;
-        for (int k = 1; k <= stored; ++k) {
-            WebPMuxFrameInfo frame{};
-            if (WebPMuxGetFrame(piece.mux.get(), static_cast<std::uint32_t>(k), &frame) != WEBP_MUX_OK) throw std::runtime_error(name + " has a corrupt frame");
-            const std::unique_ptr<WebPData, void (*)(WebPData*)> owned(&frame.bitstream, WebPDataClear);
-            if (frame.id != WEBP_CHUNK_ANMF) {  // a still: the whole range in one picture
-                frame.id = WEBP_CHUNK_ANMF;
-                frame.duration = static_cast<int>(expected_ms);
-            }
-            if (frame.duration <= 0 || frame.duration % spacing != 0) {
-                throw std::runtime_error(name + " has a frame lasting " + std::to_string(frame.duration) + " ms, not a multiple of " + std::to_string(spacing));
-            }
-            lasts_ms += frame.duration;
-            if (k == 1) {
-                // A part's first frame must cover the canvas, since it will follow another part's last.
-                int fw = 0, fh = 0;
-                if (frame.x_offset != 0 || frame.y_offset != 0 || !WebPGetInfo(frame.bitstream.bytes, frame.bitstream.size, &fw, &fh) || fw != width ||
-                    fh != height) {
-                    throw std::runtime_error(name + " does not begin with a whole frame");
-                }
-                frame.blend_method = WEBP_MUX_NO_BLEND;
-            }
-            if (WebPMuxPushFrame(whole.get(), &frame, 1) != WEBP_MUX_OK) throw std::runtime_error("cannot add " + name + "'s frames");
-        }
-        if (lasts_ms != expected_ms) {
-            throw std::runtime_error(name + " lasts " + std::to_string(lasts_ms) + " ms, but its range " + frames_text(piece.range.first, piece.range.last) +
-                                     " lasts " + std::to_string(expected_ms));
-        }
-        next = piece.range.last + 1;
-    }
-    if (next != head.range.total) throw std::runtime_error(in_no_part(next, head.range.total - 1));
-    WebPData data;
-    WebPDataInit(&data);
-    if (WebPMuxSetAnimationParams(whole.get(), &params) != WEBP_MUX_OK || WebPMuxSetCanvasSize(whole.get(), width, height) != WEBP_MUX_OK ||
-        WebPMuxAssemble(whole.get(), &data) != WEBP_MUX_OK) {
-        throw std::runtime_error("cannot assemble the animation");
-    }
-    std::vector<std::uint8_t> bytes(data.bytes, data.bytes + data.size);
-    WebPDataClear(&data);
-    return bytes;
 }
 
 }  // namespace raster

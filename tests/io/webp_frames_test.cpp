@@ -1,11 +1,16 @@
+#include <raster/io/output_file.hpp>
 #include <raster/io/png.hpp>
 #include <raster/io/webp.hpp>
 #include <raster/scenes/scenes.hpp>
 
 #include "support/scratch.hpp"
+#include "support/webp_files.hpp"
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
 #include <gtest/gtest.h>
 
 using raster::Framebuffer;
@@ -62,4 +67,40 @@ TEST(WebpFramesApp, MistakesAreOneLineAndTheInputIsNeverReplaced) {
     const auto over = run(kWebpFrames, {"0000.png", "."}, dir.path());
     EXPECT_EQ(over.exit_code, 1);
     EXPECT_EQ(read_bytes(dir / "0000.png"), before);
+}
+
+TEST(WebpFramesApp, AnyFrameFileAlreadyThereIsRefusedAndNothingIsWritten) {
+    const ScratchDir dir;
+    ASSERT_EQ(run(kAnimatedCube, {"--frames", "12", "--width", "32", "--height", "24", "--quiet", "spin.webp"}, dir.path()).exit_code, 0);
+    std::filesystem::create_directory(dir / "frames");
+    test_support::write_text(dir / "frames" / "0007.png", "someone else's frame");
+    const auto seventh = run(kWebpFrames, {"spin.webp", "frames"}, dir.path());
+    EXPECT_EQ(seventh.exit_code, 1);
+    EXPECT_EQ(seventh.err, "webp-frames: 'frames' already holds frames (0007.png); choose an empty directory\n");
+    EXPECT_EQ(test_support::read_text(dir / "frames" / "0007.png"), "someone else's frame");
+    std::filesystem::remove(dir / "frames" / "0007.png");
+    // A link that leads nowhere is in the way too: a frame written through it would land elsewhere.
+    std::filesystem::create_symlink(dir / "nowhere.png", dir / "frames" / "0011.png");
+    const auto dangling = run(kWebpFrames, {"spin.webp", "frames"}, dir.path());
+    EXPECT_EQ(dangling.exit_code, 1);
+    EXPECT_EQ(dangling.err, "webp-frames: 'frames' already holds frames (0011.png); choose an empty directory\n");
+    std::vector<std::string> left;
+    for (const auto& entry : std::filesystem::directory_iterator(dir / "frames")) left.push_back(entry.path().filename().string());
+    EXPECT_EQ(left, std::vector<std::string>{"0011.png"});
+    EXPECT_FALSE(std::filesystem::exists(dir / "nowhere.png"));
+}
+
+TEST(WebpFramesApp, AFrameThatDoesNotDecodeLeavesNoFramesAndNoTemporaryDirectory) {
+    const ScratchDir dir;
+    // Four whole frames, the third's picture damaged past its header: it fails only when decoded.
+    const test_support::HandFrame whole{0, 0, 8, 8, 20, 2, test_support::vp8l_chunk(8, 8)};
+    std::vector<test_support::HandFrame> frames(4, whole);
+    // The VP8L chunk cut to its 5-byte header and one byte of pixels.
+    frames[2].picture = test_support::riff_chunk("VP8L", {whole.picture.begin() + 8, whole.picture.begin() + 14});
+    raster::write_output_file(dir / "broken.webp", test_support::animated_webp(8, 8, frames));
+    const auto result = run(kWebpFrames, {"broken.webp", "frames"}, dir.path());
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_EQ(result.err.rfind("webp-frames: 'broken.webp' has a corrupt frame 2: ", 0), 0U) << result.err;
+    EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+    EXPECT_TRUE(std::filesystem::is_empty(dir / "frames"));
 }

@@ -35,6 +35,8 @@ array=$(sbatch --parsable "${extra[@]}" --array=0-$((tasks - 1)) -o "$parts/task
 names=()
 for ((k = 0; k < tasks; ++k)); do names+=("$(printf '%s/part-%04d.webp' "$parts" "$k")"); done
 # --wrap runs /bin/sh, so the part names are listed, quoted, rather than globbed.
+# shellcheck source=sh-quote.sh
+source "$here/sh-quote.sh"
 assembly=$(sbatch --parsable "${extra[@]}" --dependency=afterok:"${array%%;*}" -o "$parts/assemble.log" --job-name=raster-assemble \
-    --wrap "$(printf '%q ' "$assemble" --quiet "$out" "${names[@]}")")
+    --wrap "$(sh_quote "$assemble" --quiet "$out" "${names[@]}")")
 echo "$array $assembly"

@@ -108,7 +108,7 @@ private:
 
 struct DecodedFrame {
     Framebuffer image;
-    int start_ms;
+    std::int64_t start_ms;  // the durations before it add up past 2^31 ms in a long enough file
     int duration_ms;
     std::vector<std::uint8_t> alpha;  // one byte per pixel, 255 where opaque
 };
@@ -133,15 +133,39 @@ inline constexpr std::uintmax_t kMaxWebpFileBytes = std::uintmax_t{1} << 30;
 // Decodes every frame into memory; for long animations prefer for_each_webp_frame.
 [[nodiscard]] DecodedWebp read_webp(const std::filesystem::path& path);
 
-// Decodes frames one at a time, each composited onto the canvas as a player shows it; stops
-// early when `visit` returns false. Returns the canvas size and the file's frame count.
 struct WebpInfo {
     int width;
     int height;
     int frame_count;  // frames in the file
 };
-// The file is read through InputFile: a regular file of at most kMaxWebpFileBytes that begins
-// like WebP, else one line and nothing read; what was read is appended to `sources` when given.
+
+// Decodes a WebP file's frames one at a time, each composited onto one canvas as a player shows
+// it (blending and disposal as libwebp's WebPAnimDecoder does, pixel for pixel). Besides the
+// file it holds the canvas (4 bytes a pixel) and the frame being decoded, whatever the canvas
+// size or frame count; the canvas is made when the first frame is decoded.
+class WebpFrameReader {
+public:
+    // Reads the file through InputFile: a regular file of at most kMaxWebpFileBytes that begins
+    // like WebP, else one line and nothing read; what was read is appended to `sources` when
+    // given. Throws std::runtime_error for a file libwebp's demuxer refuses.
+    explicit WebpFrameReader(const std::filesystem::path& path, std::vector<InputRecord>* sources = nullptr);
+    ~WebpFrameReader();
+    WebpFrameReader(WebpFrameReader&&) noexcept;
+    WebpFrameReader& operator=(WebpFrameReader&&) noexcept;
+
+    // The canvas size and frame count, from the headers.
+    [[nodiscard]] const WebpInfo& info() const noexcept;
+    // The next frame on the canvas, valid until the next call; nullptr after the last. Throws
+    // std::runtime_error naming the frame when it does not decode.
+    const DecodedFrame* next();
+
+private:
+    struct State;
+    std::unique_ptr<State> state_;
+};
+
+// Decodes frames one at a time (a WebpFrameReader); stops early when `visit` returns false.
+// Returns the canvas size and the file's frame count.
 WebpInfo for_each_webp_frame(const std::filesystem::path& path,
                              const std::function<bool(const DecodedFrame&)>& visit,
                              std::vector<InputRecord>* sources = nullptr);
