@@ -13,6 +13,9 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <span>
+#include <utility>
+#include <vector>
 
 using test_support::ScratchDir;
 using test_support::write_text;
@@ -176,4 +179,23 @@ TEST(HostileModels, FacesOfHundredsOfCornersAreReadWholeNotCutAtTwoHundredFiftyS
     EXPECT_EQ(raster::triangle_count(raster::read_model(dir / "1024.obj")), 1022U);
     write_text(dir / "300.obj", polygon(300) + "v 3 0 0\nv 4 0 0\nv 3 1 0\nf 301 302 303\n");
     EXPECT_EQ(raster::triangle_count(raster::read_model(dir / "300.obj")), 299U);
+}
+
+TEST(HostileModels, AnEmptyBufferFileIsReadWithoutANullPointerReachingAssimp) {
+    // Under UndefinedBehaviorSanitizer, an empty file once handed assimp a null pointer to copy from.
+    const ScratchDir dir;
+    write_text(dir / "empty.bin", "");
+    const std::string gltf = "{" + kAsset + R"(, "buffers": [{"byteLength": 0, "uri": "empty.bin"}], "scenes": [{"nodes": [0]}], "nodes": [{}]})";
+    EXPECT_EQ(refusal(dir, "empty-buffer.gltf", gltf), "no faces to draw");
+}
+
+TEST(HostileModels, FilesAssimpThrowsOnLeaveNoStreamBehind) {
+    // Read in this process, so that LeakSanitizer sees a stream assimp never closed.
+    for (const auto& [format, text] : std::vector<std::pair<std::string, std::string>>{
+             {"stl", "solid x\n facet normal 0 0 1\n  outer loop\n   vertex 1 2\n"},
+             {"ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_header\n1\n"},
+             {"gltf", "{" + kAsset + R"(, "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}], "nodes": [{"mesh": 0}]})"}}) {
+        const std::span<const std::uint8_t> bytes(reinterpret_cast<const std::uint8_t*>(text.data()), text.size());
+        EXPECT_THROW((void)raster::parse_scene_file(bytes, format), std::runtime_error) << format;
+    }
 }
