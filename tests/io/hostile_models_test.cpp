@@ -181,12 +181,14 @@ TEST(HostileModels, FacesOfHundredsOfCornersAreReadWholeNotCutAtTwoHundredFiftyS
     EXPECT_EQ(raster::triangle_count(raster::read_model(dir / "300.obj")), 299U);
 }
 
-TEST(HostileModels, AnEmptyBufferFileIsReadWithoutANullPointerReachingAssimp) {
+TEST(HostileModels, EmptyFilesAreRefusedWithoutANullPointerReachingAssimp) {
     // Under UndefinedBehaviorSanitizer, an empty file once handed assimp a null pointer to copy from.
     const ScratchDir dir;
     write_text(dir / "empty.bin", "");
     const std::string gltf = "{" + kAsset + R"(, "buffers": [{"byteLength": 0, "uri": "empty.bin"}], "scenes": [{"nodes": [0]}], "nodes": [{}]})";
-    EXPECT_EQ(refusal(dir, "empty-buffer.gltf", gltf), "no faces to draw");
+    EXPECT_EQ(refusal(dir, "empty-buffer.gltf", gltf), "not a glTF 2.0, STL or PLY model raster can read (or one it finds broken)");
+    EXPECT_EQ(refusal(dir, "empty.stl", ""), "is empty, not an STL model");
+    EXPECT_EQ(refusal(dir, "empty.ply", ""), "is empty, not a PLY model");
 }
 
 TEST(HostileModels, FilesAssimpThrowsOnLeaveNoStreamBehind) {
