@@ -4,6 +4,7 @@
 #include <raster/render/model_scene.hpp>
 #include <raster/io/model_file.hpp>
 #include <raster/io/obj_file.hpp>
+#include <raster/io/reader_service.hpp>
 #include <raster/io/texture_file.hpp>
 
 #include <algorithm>
@@ -300,6 +301,9 @@ int main(int argc, char** argv) {
 
     return run_exporter(app, options, argc, argv, [&] {
         const auto start = std::chrono::steady_clock::now();
+        // Forked now, while the process is small: each model's reader is forked from it.
+        const raster::ReaderService readers;
+        plan.obj.limits.service = &readers;
         if (up) view.up = *up;
         view.light = light;
         if (background == "none") {

@@ -27,6 +27,10 @@ public:
         value(static_cast<std::uint64_t>(items.size()));
         bytes(items.data(), items.size() * sizeof(T));
     }
+    void array(std::span<const std::uint8_t> items) {
+        value(static_cast<std::uint64_t>(items.size()));
+        bytes(items.data(), items.size());
+    }
     void text(const std::string& s) {
         value(static_cast<std::uint64_t>(s.size()));
         bytes(s.data(), s.size());
@@ -123,7 +127,7 @@ std::size_t model_wire_size(const Model& model) noexcept {
         const Mesh& m = part.mesh;
         size += 256 + part.material_name.size() + m.positions.size() * sizeof(glm::vec3) + m.normals.size() * sizeof(glm::vec3) +
                 m.facets.size() * sizeof(Facet) + m.uvs.size() * sizeof(glm::vec2) + m.colours.size() * sizeof(LinearRgb);
-        if (part.texture && counted.emplace(part.texture.get(), true).second) size += 64 + part.texture->level(0).bytes().size();
+        if (part.texture && counted.emplace(part.texture.get(), true).second) size += 64 + part.texture->level(0).bytes().size() * 4 / 3 + 64 * part.texture->level_count();
     }
     for (const std::string& warning : model.warnings) size += 8 + warning.size();
     for (const InputRecord& source : model.sources) size += 64 + source.path.native().size() + source.role.size();
@@ -141,11 +145,14 @@ void append_model_wire(const Model& model, std::vector<std::uint8_t>& out) {
         }
     }
     wire.value(static_cast<std::uint64_t>(textures.size()));
-    for (const Texture* texture : textures) {  // level 0 only: the mip chain is built again from it
-        const Framebuffer& image = texture->level(0);
-        wire.value(image.width());
-        wire.value(image.height());
-        wire.array(std::vector<std::uint8_t>(image.bytes().begin(), image.bytes().end()));
+    for (const Texture* texture : textures) {  // every level: the chain is not built twice
+        wire.value(static_cast<std::uint64_t>(texture->level_count()));
+        for (std::size_t level = 0; level < texture->level_count(); ++level) {
+            const Framebuffer& image = texture->level(level);
+            wire.value(image.width());
+            wire.value(image.height());
+            wire.array(image.bytes());
+        }
     }
     wire.value(static_cast<std::uint64_t>(model.parts.size()));
     for (const ModelPart& part : model.parts) {
@@ -177,11 +184,21 @@ Model model_from_wire(std::span<const std::uint8_t> bytes) {
     if (texture_count > bytes.size()) WireReader::broken();
     std::vector<std::shared_ptr<const Texture>> textures(static_cast<std::size_t>(texture_count));
     for (auto& texture : textures) {
-        const auto width = wire.value<int>();
-        const auto height = wire.value<int>();
-        std::vector<std::uint8_t> rgb = wire.array<std::uint8_t>();
-        if (width <= 0 || height <= 0 || rgb.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3) WireReader::broken();
-        texture = std::make_shared<const Texture>(Framebuffer(width, height, std::move(rgb)));
+        const auto count = wire.value<std::uint64_t>();
+        if (count == 0 || count > 64) WireReader::broken();
+        std::vector<Framebuffer> levels;
+        for (std::uint64_t level = 0; level < count; ++level) {
+            const auto width = wire.value<int>();
+            const auto height = wire.value<int>();
+            std::vector<std::uint8_t> rgb = wire.array<std::uint8_t>();
+            if (width <= 0 || height <= 0 || rgb.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3) WireReader::broken();
+            levels.emplace_back(width, height, std::move(rgb));
+        }
+        try {
+            texture = std::make_shared<const Texture>(Texture::from_levels(std::move(levels)));
+        } catch (const std::invalid_argument&) {
+            WireReader::broken();
+        }
     }
     Model model;
     const auto parts = wire.value<std::uint64_t>();

@@ -2,9 +2,6 @@
 
 #include "io/model_wire.hpp"
 
-#include <cstdint>
-#include <cstring>
-
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
@@ -15,6 +12,7 @@
 #include <fcntl.h>
 #include <new>
 #include <poll.h>
+#include <span>
 #include <stdexcept>
 #include <sys/prctl.h>
 #include <sys/resource.h>
@@ -95,9 +93,12 @@ void write_all(int descriptor, const std::vector<std::uint8_t>& bytes) {
     const auto cpu = static_cast<rlim_t>(std::ceil(max_seconds));
     const rlimit processor{cpu, cpu + 1};
     ::setrlimit(RLIMIT_CPU, &processor);
+    const rlim_t ceiling = address_space_now() + max_memory;
 #ifndef RASTER_ADDRESS_SANITIZER  // its shadow memory takes terabytes of address space
-    const rlimit memory{address_space_now() + max_memory, address_space_now() + max_memory};
+    const rlimit memory{ceiling, ceiling};
     ::setrlimit(RLIMIT_AS, &memory);
+#else
+    (void)ceiling;
 #endif
     std::signal(SIGPIPE, SIG_DFL);
     std::set_new_handler(note_memory_ran_out);
@@ -133,20 +134,21 @@ std::string signal_name(int signal) {
 
 }  // namespace
 
-Model read_in_child(const std::function<Model()>& read, const std::string& name, const std::string& reader, const ReaderLimits& limits) {
-    if (!limits.separate_process) return read();
+ChildOutcome run_reader_child(const std::function<Model()>& read, const ReaderLimits& limits) {
     const std::uint64_t max_memory = limits.max_memory > 0 ? limits.max_memory : default_max_memory();
     const double max_seconds = std::max(limits.max_seconds, 0.001);
-    const std::string memory_refusal =
-        name + ": the " + reader + " reader needed more than " + memory_text(max_memory) + " of memory; raise --max-memory to allow it";
-    const std::string time_refusal = name + ": the " + reader + " reader took more than " + seconds_text(max_seconds) + "; raise --max-seconds to allow it";
+    ChildOutcome outcome;
     int pipe_ends[2];
-    if (::pipe2(pipe_ends, O_CLOEXEC) != 0) throw std::runtime_error(name + ": cannot start the reader process: " + std::strerror(errno));
+    if (::pipe2(pipe_ends, O_CLOEXEC) != 0) {
+        outcome.start_error = std::strerror(errno);
+        return outcome;
+    }
     const ::pid_t child = ::fork();
     if (child < 0) {
+        outcome.start_error = std::strerror(errno);
         ::close(pipe_ends[0]);
         ::close(pipe_ends[1]);
-        throw std::runtime_error(name + ": cannot start the reader process: " + std::strerror(errno));
+        return outcome;
     }
     if (child == 0) {
         ::close(pipe_ends[0]);
@@ -155,14 +157,15 @@ Model read_in_child(const std::function<Model()>& read, const std::string& name,
     ::close(pipe_ends[1]);
     ::fcntl(pipe_ends[0], F_SETPIPE_SZ, 1 << 20);  // fewer trips for a large model; the default where refused
     // The length comes first, so the model lands in one buffer of its own size.
-    std::vector<std::uint8_t> received(sizeof(std::uint64_t));
+    std::vector<std::uint8_t>& received = outcome.message;
+    received.resize(sizeof(std::uint64_t));
     std::size_t got = 0;
-    bool timed_out = false, too_large = false, length_known = false;
+    bool length_known = false;
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(max_seconds);
     while (got < received.size()) {
         const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now()).count();
         if (left <= 0) {
-            timed_out = true;
+            outcome.timed_out = true;
             break;
         }
         pollfd ready{pipe_ends[0], POLLIN, 0};
@@ -177,7 +180,7 @@ Model read_in_child(const std::function<Model()>& read, const std::string& name,
             std::uint64_t length = 0;
             std::memcpy(&length, received.data(), sizeof length);
             if (length > max_memory) {
-                too_large = true;
+                outcome.too_large = true;
                 break;
             }
             received.assign(static_cast<std::size_t>(length), 0);
@@ -187,32 +190,29 @@ Model read_in_child(const std::function<Model()>& read, const std::string& name,
     }
     if (!length_known || got < received.size()) received.clear();  // the child died before it had said all
     ::close(pipe_ends[0]);
-    if (timed_out || too_large) ::kill(child, SIGKILL);
-    int status = 0;
+    if (outcome.timed_out || outcome.too_large) ::kill(child, SIGKILL);
     rusage used{};
-    const auto reap = [&] {
-        while (::wait4(child, &status, 0, &used) < 0 && errno == EINTR) {
-        }
-    };
-    if (!timed_out && !too_large && !received.empty() && static_cast<Outcome>(received.front()) == Outcome::model) {
-        // Decoded while the child gives its memory back, then reaped: it said all it had to say.
-        const std::span<const std::uint8_t> rest = std::span<const std::uint8_t>(received).subspan(1);
-        try {
-            Model model = model_from_wire(rest);
-            reap();
-            return model;
-        } catch (const std::runtime_error& problem) {
-            reap();
-            throw std::runtime_error(name + ": " + problem.what());
-        }
+    while (::wait4(child, &outcome.status, 0, &used) < 0 && errno == EINTR) {
     }
-    reap();
-    if (timed_out) throw std::runtime_error(time_refusal);
-    if (too_large) throw std::runtime_error(memory_refusal);
+    outcome.processor_seconds = static_cast<double>(used.ru_utime.tv_sec + used.ru_stime.tv_sec) +
+                                1e-6 * static_cast<double>(used.ru_utime.tv_usec + used.ru_stime.tv_usec);
+    return outcome;
+}
+
+Model model_from_outcome(const ChildOutcome& outcome, const std::string& name, const std::string& reader, const ReaderLimits& limits) {
+    const std::uint64_t max_memory = limits.max_memory > 0 ? limits.max_memory : default_max_memory();
+    const double max_seconds = std::max(limits.max_seconds, 0.001);
+    const std::string memory_refusal =
+        name + ": the " + reader + " reader needed more than " + memory_text(max_memory) + " of memory; raise --max-memory to allow it";
+    const std::string time_refusal = name + ": the " + reader + " reader took more than " + seconds_text(max_seconds) + "; raise --max-seconds to allow it";
+    if (!outcome.start_error.empty()) throw std::runtime_error(name + ": cannot start the reader process: " + outcome.start_error);
+    if (outcome.timed_out) throw std::runtime_error(time_refusal);
+    if (outcome.too_large) throw std::runtime_error(memory_refusal);
+    const std::vector<std::uint8_t>& received = outcome.message;
+    const int status = outcome.status;
     if (WIFSIGNALED(status)) {
         const int signal = WTERMSIG(status);
-        const double processor = static_cast<double>(used.ru_utime.tv_sec + used.ru_stime.tv_sec) + 1e-6 * static_cast<double>(used.ru_utime.tv_usec + used.ru_stime.tv_usec);
-        if (signal == SIGXCPU || (signal == SIGKILL && processor >= std::ceil(max_seconds))) throw std::runtime_error(time_refusal);
+        if (signal == SIGXCPU || (signal == SIGKILL && outcome.processor_seconds >= std::ceil(max_seconds))) throw std::runtime_error(time_refusal);
         if (signal == SIGKILL) throw std::runtime_error(name + ": the " + reader + " reader was killed (by the system, perhaps for want of memory)");
         throw std::runtime_error(name + ": the " + reader + " reader crashed (" + signal_name(signal) + ")");
     }
@@ -220,11 +220,21 @@ Model read_in_child(const std::function<Model()>& read, const std::string& name,
         // A sanitizer's report ends the child with an exit code of its own.
         throw std::runtime_error(name + ": the " + reader + " reader crashed (exit status " + std::to_string(WEXITSTATUS(status)) + ")");
     }
-    const auto outcome = static_cast<Outcome>(received.front());
+    const auto kind = static_cast<Outcome>(received.front());
     const std::span<const std::uint8_t> rest = std::span<const std::uint8_t>(received).subspan(1);
-    if (outcome == Outcome::out_of_memory) throw std::runtime_error(memory_refusal);
-    if (outcome == Outcome::refused) throw std::runtime_error(std::string(rest.begin(), rest.end()));
-    throw std::runtime_error(name + ": the " + reader + " reader sent nothing raster understands");
+    if (kind == Outcome::out_of_memory) throw std::runtime_error(memory_refusal);
+    if (kind == Outcome::refused) throw std::runtime_error(std::string(rest.begin(), rest.end()));
+    if (kind != Outcome::model) throw std::runtime_error(name + ": the " + reader + " reader sent nothing raster understands");
+    try {
+        return model_from_wire(rest);
+    } catch (const std::runtime_error& problem) {
+        throw std::runtime_error(name + ": " + problem.what());
+    }
+}
+
+Model read_in_child(const std::function<Model()>& read, const std::string& name, const std::string& reader, const ReaderLimits& limits) {
+    if (!limits.separate_process) return read();
+    return model_from_outcome(run_reader_child(read, limits), name, reader, limits);
 }
 
 }  // namespace detail

@@ -5,6 +5,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 // A model read in a child process under limits, so that a reader we do not own (assimp,
 // tinyobjloader, stb_image) can crash, loop or allocate without end and take only itself down.
@@ -14,6 +15,23 @@ namespace raster::detail {
 // limited, and takes its model back through a pipe; in this process when the limits say so.
 // Throws std::runtime_error with one line naming `name` when the child crashed ("the
 // `reader` reader crashed"), ran out of memory or time, or `read` threw.
+// What a reader child left: its message (length first stripped), how it ended, and whether
+// the waiting side stopped it for time or for the size of what it sent.
+struct ChildOutcome {
+    std::vector<std::uint8_t> message;
+    int status = 0;  // as waitpid gives it
+    double processor_seconds = 0.0;
+    bool timed_out = false;
+    bool too_large = false;
+    std::string start_error;  // why no child could be started, or ""
+};
+
+// Forks a child that runs `read` under `limits` and collects what it sends.
+[[nodiscard]] ChildOutcome run_reader_child(const std::function<Model()>& read, const ReaderLimits& limits);
+
+// The model a child sent, or the one line that says why there is none.
+[[nodiscard]] Model model_from_outcome(const ChildOutcome& outcome, const std::string& name, const std::string& reader, const ReaderLimits& limits);
+
 [[nodiscard]] Model read_in_child(const std::function<Model()>& read, const std::string& name, const std::string& reader,
                                   const ReaderLimits& limits);
 

@@ -3,6 +3,7 @@
 #include "shade/texture_wrap.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 #include <cmath>
 #include <utility>
 #include <glm/geometric.hpp>
@@ -41,12 +42,27 @@ Framebuffer halved(const Framebuffer& level, const std::array<float, 256>& linea
 
 }  // namespace
 
-Texture::Texture(Framebuffer image) {
+Texture::Texture() noexcept {
     for (std::size_t i = 0; i < linear_from_byte_.size(); ++i) {
         linear_from_byte_[i] = static_cast<float>(linear_from_srgb_channel(static_cast<double>(i) / 255.0));
     }
+}
+
+Texture::Texture(Framebuffer image) : Texture() {
     levels_.push_back(std::move(image));
     while (levels_.back().width() > 1 || levels_.back().height() > 1) levels_.push_back(halved(levels_.back(), linear_from_byte_));
+}
+
+Texture Texture::from_levels(std::vector<Framebuffer> levels) {
+    for (std::size_t i = 1; i < levels.size(); ++i) {
+        if (levels[i].width() != std::max(1, levels[i - 1].width() / 2) || levels[i].height() != std::max(1, levels[i - 1].height() / 2)) {
+            throw std::invalid_argument("a mip level is not half the one before it");
+        }
+    }
+    if (levels.empty() || levels.back().width() != 1 || levels.back().height() != 1) throw std::invalid_argument("a mip chain must end at 1 x 1");
+    Texture texture;
+    texture.levels_ = std::move(levels);
+    return texture;
 }
 
 LinearRgb Texture::texel(const Framebuffer& level, int x, int y) const noexcept {

@@ -7,6 +7,8 @@
 #include "support/model_files.hpp"
 #include "support/scratch.hpp"
 
+#include <raster/io/reader_service.hpp>
+
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -24,6 +26,7 @@
 #endif
 
 using test_support::ScratchDir;
+using test_support::write_text;
 
 namespace {
 
@@ -132,4 +135,24 @@ TEST(ReaderProcess, BytesThatAreNoModelAreRefusedNotTrusted) {
     bytes.clear();
     raster::detail::append_model_wire(model, bytes);
     EXPECT_THROW((void)raster::detail::model_from_wire(bytes), std::runtime_error);
+}
+
+TEST(ReaderProcess, TheServiceForksReadersThatGiveWhatADirectChildGives) {
+    const ScratchDir dir;
+    const std::filesystem::path obj = test_support::write_crate_on_floor(dir.path());
+    write_text(dir / "chain.gltf", R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}], "nodes": [{"children": [0]}]})");
+    const raster::ReaderService service;
+    raster::ObjOptions through;
+    through.limits.service = &service;
+    for (int round = 0; round < 3; ++round) {  // one service, many readers
+        EXPECT_EQ(wire_of(raster::read_model(obj, through)), wire_of(raster::read_model(obj)));
+        try {
+            (void)raster::read_model(dir / "chain.gltf", through);
+            ADD_FAILURE() << "a looping node graph was read";
+        } catch (const std::runtime_error& problem) {
+            EXPECT_EQ(std::string(problem.what()), (dir / "chain.gltf").string() + ": its node hierarchy loops (node 0)");
+        }
+    }
+    through.limits.max_memory = std::uint64_t{1} << 10;
+    EXPECT_THROW((void)raster::read_model(obj, through), std::runtime_error);
 }

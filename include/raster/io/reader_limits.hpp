@@ -6,6 +6,8 @@
 // or an endless loop takes down alone (doc/conventions.md#reader-process).
 namespace raster {
 
+class ReaderService;
+
 struct ReaderLimits {
     // Address space the reader may add to what the process holds; 0 takes default_max_memory().
     std::uint64_t max_memory = 0;
@@ -13,6 +15,8 @@ struct ReaderLimits {
     double max_seconds = 120.0;
     // false reads in this process, unbounded: for the lab's measure of what the process costs.
     bool separate_process = true;
+    // Where set, the reader is forked from this small process rather than from the caller.
+    const ReaderService* service = nullptr;
 };
 
 // Half of the physical memory, or 1 GiB where it cannot be found.

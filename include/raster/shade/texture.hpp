@@ -44,6 +44,10 @@ class Texture {
 public:
     // Adopts an image whose row 0 is its top row, its bytes sRGB-encoded; builds the mip chain.
     explicit Texture(Framebuffer image);
+    // Adopts a whole mip chain as level() gives one (each level half the one before, at least 1,
+    // down to 1 x 1), so that a chain built elsewhere is not built again; throws
+    // std::invalid_argument for any other chain.
+    [[nodiscard]] static Texture from_levels(std::vector<Framebuffer> levels);
 
     [[nodiscard]] int width() const noexcept { return levels_.front().width(); }
     [[nodiscard]] int height() const noexcept { return levels_.front().height(); }
@@ -58,6 +62,7 @@ public:
     void sample_lanes(const LaneUvs& at, Sampler sampler, LaneRgb& out, int count) const noexcept;
 
 private:
+    Texture() noexcept;
     [[nodiscard]] LinearRgb texel(const Framebuffer& level, int x, int y) const noexcept;
     [[nodiscard]] LinearRgb nearest(const Framebuffer& level, glm::vec2 uv, TextureWrap wrap) const noexcept;
     [[nodiscard]] LinearRgb bilinear(const Framebuffer& level, glm::vec2 uv, TextureWrap wrap) const noexcept;
