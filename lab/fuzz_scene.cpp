@@ -29,7 +29,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         raster::ObjOptions options;
         options.load_textures = false;
         options.confine = std::filesystem::temp_directory_path();
-        options.limits.max_seconds = 10.0;
+        options.limits.max_seconds = 5.0;  // within libFuzzer's own -timeout=10
         options.limits.max_memory = std::uint64_t{1} << 30;
         const auto model = std::make_shared<const raster::Model>(raster::read_model(path, options));
         raster::ModelView view;
