@@ -47,15 +47,15 @@ HeldSignals::HeldSignals(std::span<const int> signals) : signals_(signals.begin(
     if (held_on_this_thread == 0) {
         shared.released.wait(lock, [&] {
             for (const int signal : signals_) {
-                if (shared.count[signal] > 0 && arrived_signals[signal]) return false;
+                if (shared.count[static_cast<std::size_t>(signal)] > 0 && arrived_signals[signal]) return false;
             }
             return true;
         });
     }
     for (const int signal : signals_) {
-        if (shared.count[signal]++ > 0) continue;
-        ::sigaction(signal, nullptr, &shared.before[signal]);
-        if (ignored(shared.before[signal])) continue;  // nohup's SIGHUP stays ignored
+        if (shared.count[static_cast<std::size_t>(signal)]++ > 0) continue;
+        ::sigaction(signal, nullptr, &shared.before[static_cast<std::size_t>(signal)]);
+        if (ignored(shared.before[static_cast<std::size_t>(signal)])) continue;  // nohup's SIGHUP stays ignored
         struct sigaction note {};
         note.sa_handler = note_signal;
         note.sa_flags = SA_RESTART;  // the other threads' reads and writes go on undisturbed
@@ -70,11 +70,11 @@ HeldSignals::~HeldSignals() {
     const std::lock_guard lock(shared.mutex);
     --held_on_this_thread;
     for (const int signal : signals_) {
-        if (--shared.count[signal] == 0) ::sigaction(signal, &shared.before[signal], nullptr);
+        if (--shared.count[static_cast<std::size_t>(signal)] == 0) ::sigaction(signal, &shared.before[static_cast<std::size_t>(signal)], nullptr);
     }
     // Raised with the lock held: no new holder starts before the signal has done what it does.
     for (const int signal : signals_) {
-        if (shared.count[signal] == 0 && arrived_signals[signal]) {
+        if (shared.count[static_cast<std::size_t>(signal)] == 0 && arrived_signals[signal]) {
             arrived_signals[signal] = false;
             ::raise(signal);
         }
