@@ -11,7 +11,6 @@
 
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <csignal>
 #include <stdexcept>
 #include <string>
@@ -60,14 +59,12 @@ TEST(ReaderProcess, AReaderThatCrashesTakesOnlyItsOwnProcessDown) {
 TEST(ReaderProcess, AReaderThatNeverEndsIsStoppedAtItsTimeLimit) {
     raster::ReaderLimits limits;
     limits.max_seconds = 0.5;
-    const auto start = std::chrono::steady_clock::now();
     const std::string why = refusal_of([]() -> raster::Model {
         for (volatile bool forever = true; forever;) {
         }
         return {};
     }, limits);
     EXPECT_EQ(why, "m.gltf: the glTF reader took more than 0.5 s; raise --max-seconds to allow it");
-    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 30.0);
 }
 
 TEST(ReaderProcess, AReaderThatAllocatesWithoutEndIsStoppedAtItsMemoryLimit) {
