@@ -105,14 +105,7 @@ InputFile::InputFile(const fs::path& path, const InputRules& rules) : record_{pa
         const int file_flags = ::fcntl(descriptor_, F_GETFL);
         if (file_flags >= 0) ::fcntl(descriptor_, F_SETFL, file_flags & ~O_NONBLOCK);
         if (rules.signature != nullptr) {
-            std::vector<std::uint8_t> head(rules.signature_bytes);
-            std::size_t got = 0;
-            while (got < head.size()) {
-                const std::size_t more = read_some(std::span(head).subspan(got));
-                if (more == 0) break;
-                got += more;
-            }
-            head.resize(got);
+            const std::vector<std::uint8_t> head = read_head(rules.signature_bytes);
             if (!rules.signature(head)) refuse(size_ == 0 ? "is empty, not " + rules.expected : "is not " + rules.expected);
             rewind();
         }
@@ -154,6 +147,19 @@ std::vector<std::uint8_t> InputFile::read_all() {
     }
     bytes.resize(got);
     return bytes;
+}
+
+std::vector<std::uint8_t> InputFile::read_head(std::size_t bytes) {
+    rewind();
+    std::vector<std::uint8_t> head(bytes);
+    std::size_t got = 0;
+    while (got < head.size()) {
+        const std::size_t more = read_some(std::span(head).subspan(got));
+        if (more == 0) break;
+        got += more;
+    }
+    head.resize(got);
+    return head;
 }
 
 void InputFile::rewind() {

@@ -24,18 +24,12 @@ Model read_model_here(const std::filesystem::path& path, const ObjOptions& optio
     rules.role = "model";
     rules.max_bytes = kMaxModelFileBytes;
     rules.confine = options.confine;
-    std::vector<std::uint8_t> head(kSignatureBytes);
+    std::vector<std::uint8_t> head;
     std::uintmax_t size = 0;
     try {
         InputFile file(path, rules);
         size = file.size();
-        std::size_t got = 0;
-        while (got < head.size()) {
-            const std::size_t more = file.read_some(std::span(head).subspan(got));
-            if (more == 0) break;
-            got += more;
-        }
-        head.resize(got);
+        head = file.read_head(kSignatureBytes);
     } catch (const std::runtime_error& problem) {
         throw std::runtime_error(name + ": " + problem.what());
     }

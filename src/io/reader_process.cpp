@@ -18,6 +18,7 @@
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <utility>
 #include <vector>
 
 #if defined(__SANITIZE_ADDRESS__)
@@ -121,6 +122,11 @@ void write_all(int descriptor, const std::vector<std::uint8_t>& bytes) {
     ::_exit(0);
 }
 
+// The limits as they apply: the default memory where none is set, and never no time at all.
+std::pair<std::uint64_t, double> limits_in_force(const ReaderLimits& limits) {
+    return {limits.max_memory > 0 ? limits.max_memory : default_max_memory(), std::max(limits.max_seconds, 0.001)};
+}
+
 std::string signal_name(int signal) {
     switch (signal) {
     case SIGSEGV: return "segmentation fault";
@@ -135,8 +141,7 @@ std::string signal_name(int signal) {
 }  // namespace
 
 ChildOutcome run_reader_child(const std::function<Model()>& read, const ReaderLimits& limits) {
-    const std::uint64_t max_memory = limits.max_memory > 0 ? limits.max_memory : default_max_memory();
-    const double max_seconds = std::max(limits.max_seconds, 0.001);
+    const auto [max_memory, max_seconds] = limits_in_force(limits);
     ChildOutcome outcome;
     int pipe_ends[2];
     if (::pipe2(pipe_ends, O_CLOEXEC) != 0) {
@@ -200,8 +205,7 @@ ChildOutcome run_reader_child(const std::function<Model()>& read, const ReaderLi
 }
 
 Model model_from_outcome(const ChildOutcome& outcome, const std::string& name, const std::string& reader, const ReaderLimits& limits) {
-    const std::uint64_t max_memory = limits.max_memory > 0 ? limits.max_memory : default_max_memory();
-    const double max_seconds = std::max(limits.max_seconds, 0.001);
+    const auto [max_memory, max_seconds] = limits_in_force(limits);
     const std::string memory_refusal =
         name + ": the " + reader + " reader needed more than " + memory_text(max_memory) + " of memory; raise --max-memory to allow it";
     const std::string time_refusal = name + ": the " + reader + " reader took more than " + seconds_text(max_seconds) + "; raise --max-seconds to allow it";

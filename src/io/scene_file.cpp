@@ -39,9 +39,6 @@ namespace raster {
 
 namespace {
 
-// The deepest node hierarchy followed: a file may nest nodes, but not without end.
-constexpr int kMaxNodeDepth = 256;
-
 // The checks a model file passes before assimp parses it, on every open: assimp opens some
 // files twice, and a check made only the first time is no check.
 std::string structure_problem(std::span<const std::uint8_t> bytes, const std::string& extension, const std::filesystem::path& directory,
@@ -248,7 +245,7 @@ public:
 
 private:
     void visit(const aiNode& node, const glm::dmat4& parent, int depth) {
-        if (depth > kMaxNodeDepth) throw std::runtime_error("its nodes nest more than " + std::to_string(kMaxNodeDepth) + " deep (or loop)");
+        if (depth > detail::kMaxGltfNodeDepth) throw std::runtime_error("its nodes nest more than " + std::to_string(detail::kMaxGltfNodeDepth) + " deep (or loop)");
         if (!on_path_.insert(&node).second) throw std::runtime_error("its node hierarchy loops");
         const glm::dmat4 world = parent * matrix_of(node.mTransformation);
         for (unsigned i = 0; i < node.mNumMeshes; ++i) {

@@ -58,6 +58,8 @@ public:
     std::size_t read_some(std::span<std::uint8_t> buffer);
     // Every byte from the start, never more than size() (a file that grows is cut there).
     [[nodiscard]] std::vector<std::uint8_t> read_all();
+    // The first `bytes` bytes, or all of a shorter file: where a format's signature is.
+    [[nodiscard]] std::vector<std::uint8_t> read_head(std::size_t bytes);
     void rewind();
 
 private:
