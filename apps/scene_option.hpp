@@ -1,6 +1,6 @@
 #pragma once
 
-#include <raster/geometry/auto_detail.hpp>
+#include <raster/render/auto_detail.hpp>
 #include <raster/render/render_style.hpp>
 #include <raster/scenes/diary_scenes.hpp>
 #include <raster/scenes/seed_scenes.hpp>

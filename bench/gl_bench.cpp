@@ -19,7 +19,7 @@
 #include <raster/io/webp.hpp>
 #include <raster/geometry/shapes.hpp>
 
-#include "camera/clipped_facets.hpp"
+#include "rasterize/setup_perspective.hpp"
 
 #include <CLI/CLI.hpp>
 

@@ -4,7 +4,7 @@
 // with an optional multisample framebuffer, and GL's matrices for raster's two cameras.
 #include <raster/camera/ortho_camera.hpp>
 #include <raster/camera/perspective_camera.hpp>
-#include <raster/rasterize/framebuffer.hpp>
+#include <raster/image/framebuffer.hpp>
 
 #define GL_GLEXT_PROTOTYPES 1  // OSMesa exports the GL entry points the GLSL and multisample paths call
 #include <GL/osmesa.h>

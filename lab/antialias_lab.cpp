@@ -13,7 +13,7 @@
 #include <raster/render/scene.hpp>
 #include <raster/scenes/diary_scenes.hpp>
 #include <raster/scenes/seed_scenes.hpp>
-#include <raster/shade/colour.hpp>
+#include <raster/image/colour.hpp>
 
 #include <algorithm>
 #include <array>

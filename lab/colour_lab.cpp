@@ -3,7 +3,7 @@
 // colour.csv and colour-summary.md for doc/lab/ (lab/colour_chart.gp draws colour.svg).
 #include "lab_args.hpp"
 
-#include <raster/shade/colour.hpp>
+#include <raster/image/colour.hpp>
 
 #include <algorithm>
 #include <array>

@@ -1,6 +1,6 @@
 #include "scene_lab.hpp"
 
-#include "rasterize/shaded_triangle.hpp"
+#include "rasterize/setup_ortho.hpp"
 
 #include <raster/shade/shaders.hpp>
 #include <raster/geometry/shapes.hpp>

@@ -1,6 +1,6 @@
 #include "fill_kernels.hpp"
 
-#include <raster/rasterize/subpixel.hpp>
+#include <raster/image/subpixel.hpp>
 
 #include <array>
 

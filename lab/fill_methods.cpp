@@ -3,7 +3,7 @@
 #include "fill_kernels.hpp"
 
 #include <raster/rasterize/fill.hpp>
-#include <raster/rasterize/subpixel.hpp>
+#include <raster/image/subpixel.hpp>
 
 #include <array>
 

@@ -9,7 +9,7 @@
 #include "io/image_header.hpp"
 
 #include <raster/geometry/mesh.hpp>
-#include <raster/geometry/model.hpp>
+#include <raster/io/model.hpp>
 #include <raster/io/model_file.hpp>
 
 #include <algorithm>

@@ -6,7 +6,8 @@
 // Writes perspective-*.csv and perspective-summary.md; lab/perspective_charts.gp draws the charts.
 #include "lab_args.hpp"
 
-#include "camera/clipped_facets.hpp"
+#include <raster/shade/shaders.hpp>
+#include "rasterize/setup_perspective.hpp"
 #include "recording_shader.hpp"
 
 #include <raster/scenes/diary_scenes.hpp>

@@ -2,7 +2,7 @@
 // Writes a 700 x 700 grid (977,202 triangles) as binary PLY and as OBJ in a temporary
 // directory, then loads each file in a fresh process, in the child and in the process in turn,
 // as `render` does once per run; prints the medians and spreads.
-#include <raster/geometry/model.hpp>
+#include <raster/io/model.hpp>
 #include <raster/io/model_file.hpp>
 
 #include <algorithm>

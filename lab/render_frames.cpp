@@ -3,7 +3,7 @@
 // so the same file builds against older tags for comparison. `render-frames --time N` times, N
 // times interleaved, clearing the 360 frames against rendering them (clear, then fill), in wall
 // time, since callgrind counts each byte of a `rep movsb` as an instruction.
-#include <raster/rasterize/framebuffer.hpp>
+#include <raster/image/framebuffer.hpp>
 #include <raster/scenes/scenes.hpp>
 
 #include <algorithm>

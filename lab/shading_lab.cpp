@@ -2,7 +2,7 @@
 #include "scene_lab.hpp"
 
 #include <raster/geometry/analytic_shape.hpp>
-#include <raster/geometry/auto_detail.hpp>
+#include <raster/render/auto_detail.hpp>
 #include <raster/scenes/diary_scenes.hpp>
 
 #include <algorithm>

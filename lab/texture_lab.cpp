@@ -3,7 +3,7 @@
 // Writes texture-filtering.csv and texture-summary.md; lab/texture_chart.gp draws the chart.
 #include "lab_args.hpp"
 
-#include "camera/clipped_facets.hpp"
+#include "rasterize/setup_perspective.hpp"
 
 #include <raster/shade/texture.hpp>
 #include <raster/shade/textured_shaders.hpp>

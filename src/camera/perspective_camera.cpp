@@ -52,4 +52,19 @@ glm::dvec2 PerspectiveCamera::screen_from_clip(glm::dvec4 clip) const noexcept {
     return {(x_ndc + 1.0) * width_ / 2.0 - 0.5 - offset_.x, (1.0 - y_ndc) * height_ / 2.0 - 0.5 - offset_.y};
 }
 
+PerspectiveCamera perspective_matching(const OrthoCamera& flat, int width, int height, double fov_degrees) {
+    if (!(fov_degrees > 0.0 && fov_degrees < 180.0)) {
+        throw std::invalid_argument("field of view must be between 0 and 180 degrees, got " + std::to_string(fov_degrees));
+    }
+    const double to_origin = flat.view_from_world(glm::vec3(0.0F)).z;
+    // Pixels per world unit match the orthographic camera's on the plane through the origin.
+    const double half_angle = fov_degrees * std::numbers::pi / 360.0;
+    const double distance = height / (2.0 * std::max(flat.scale(), 0.5) * std::tan(half_angle));
+    const PerspectiveCamera::Lens lens{fov_degrees, distance / 100.0, distance + 100.0};
+    // The same axes, the eye moved in double precision: no rounding through floats on the way.
+    const OrthoCamera moved = flat.dollied(to_origin - distance);
+    if (!std::isfinite(glm::length(glm::dvec3(moved.eye())))) throw std::invalid_argument("camera eye is too far out to move back");
+    return PerspectiveCamera::from_view(moved, width, height, lens);
+}
+
 }  // namespace raster

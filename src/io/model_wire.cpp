@@ -2,7 +2,7 @@
 
 #include "io/wire_bytes.hpp"
 
-#include <raster/rasterize/framebuffer.hpp>
+#include <raster/image/framebuffer.hpp>
 
 #include <map>
 #include <memory>

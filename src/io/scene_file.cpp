@@ -7,7 +7,7 @@
 #include "io/ply_header.hpp"
 #include "geometry/polygon_triangles.hpp"
 
-#include <raster/shade/colour.hpp>
+#include <raster/image/colour.hpp>
 #include <raster/io/input_file.hpp>
 #include <raster/io/texture_file.hpp>
 

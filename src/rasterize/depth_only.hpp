@@ -1,10 +1,8 @@
 #pragma once
 
-#include <raster/rasterize/framebuffer.hpp>
-#include <raster/shade/shaders.hpp>
+#include <raster/rasterize/shader.hpp>
 
-// The shader of a depth pass: it carries nothing and colours nothing, so the rasterizers only
-// test and write depth for it (doc/conventions.md#depth).
+// The shader of a depth pass (raster/rasterize/shader.hpp's DepthOnly).
 namespace raster::detail {
 
 struct DepthOnlyShader {
@@ -19,9 +17,6 @@ struct DepthOnlyShader {
     [[nodiscard]] static Varying vertex(const Corner& /*corner*/) noexcept { return {}; }
     [[nodiscard]] static Rgb pixel(Varying /*nothing*/) noexcept { return {}; }
 };
-
-// A shader that writes depth and no colour.
-template <typename Shader>
-concept DepthOnly = requires { requires Shader::kDepthOnly; };
+static_assert(Shader<DepthOnlyShader> && DepthOnly<DepthOnlyShader>);
 
 }  // namespace raster::detail

@@ -1,6 +1,6 @@
 #pragma once
 
-#include <raster/rasterize/subpixel.hpp>
+#include <raster/image/subpixel.hpp>
 
 #include <algorithm>
 #include <cstdint>

@@ -1,14 +1,14 @@
 #pragma once
 
-#include <raster/rasterize/framebuffer.hpp>
-#include <raster/shade/lanes.hpp>
+#include <raster/image/framebuffer.hpp>
+#include <raster/image/lanes.hpp>
 
 #include <array>
 #include <cstdint>
 #include <span>
 
 // Pixels gathered for the shader: the rasterizers add each pixel that passed its depth test, and
-// every kLanes pixels the shader colours them all at once (raster/shade/lanes.hpp). A batch may
+// every kLanes pixels the shader colours them all at once (raster/image/lanes.hpp). A batch may
 // stay open across triangles: pixels are written in the order they were added, so a later
 // triangle's pixel still lands over an earlier one's.
 namespace raster::detail {

@@ -2,7 +2,7 @@
 
 #include "rasterize/sample_buffer.hpp"
 #include "rasterize/sample_coverage.hpp"
-#include "rasterize/shaded_triangle.hpp"
+#include "rasterize/triangle_loop.hpp"
 
 #include <algorithm>
 #include <array>

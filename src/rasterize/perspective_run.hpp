@@ -1,6 +1,6 @@
 #pragma once
 
-#include <raster/shade/lanes.hpp>
+#include <raster/image/lanes.hpp>
 
 #include "rasterize/lane_batch.hpp"
 

@@ -1,6 +1,6 @@
 #include "rasterize/sample_buffer.hpp"
 
-#include <raster/shade/colour.hpp>
+#include <raster/image/colour.hpp>
 
 #include <algorithm>
 #include <cmath>

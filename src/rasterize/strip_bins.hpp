@@ -1,6 +1,6 @@
 #pragma once
 
-#include "rasterize/shaded_triangle.hpp"
+#include "rasterize/triangle_loop.hpp"
 
 #include <algorithm>
 #include <array>

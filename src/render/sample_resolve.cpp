@@ -1,6 +1,6 @@
 #include "render/sample_resolve.hpp"
 
-#include <raster/shade/colour.hpp>
+#include <raster/image/colour.hpp>
 
 #include <algorithm>
 #include <cmath>

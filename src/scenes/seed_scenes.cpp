@@ -1,6 +1,6 @@
 #include <raster/scenes/seed_scenes.hpp>
 
-#include <raster/shade/colour.hpp>
+#include <raster/image/colour.hpp>
 #include <raster/geometry/primitives.hpp>
 #include <raster/shade/texture.hpp>
 

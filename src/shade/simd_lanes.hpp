@@ -1,13 +1,13 @@
 #pragma once
 
-#include <raster/shade/lanes.hpp>
+#include <raster/image/lanes.hpp>
 #include <raster/shade/lighting.hpp>
 
 #include <experimental/simd>
 #include <limits>
 #include <optional>
 
-// The SIMD side of lanes (raster/shade/lanes.hpp), GCC's <experimental/simd> at the baseline of
+// The SIMD side of lanes (raster/image/lanes.hpp), GCC's <experimental/simd> at the baseline of
 // the build (SSE2 on any x86-64): every function does per lane what its scalar namesake does.
 namespace raster::lanes {
 

@@ -1,5 +1,5 @@
 // The perspective camera, clipping in homogeneous space and interpolation through 1/w.
-#include "camera/clipped_facets.hpp"
+#include "rasterize/setup_perspective.hpp"
 
 #include <raster/shade/shaders.hpp>
 

@@ -1,5 +1,5 @@
 #include <raster/geometry/analytic_shape.hpp>
-#include <raster/geometry/auto_detail.hpp>
+#include <raster/render/auto_detail.hpp>
 #include <raster/scenes/diary_scenes.hpp>
 
 #include "exact_surface.hpp"

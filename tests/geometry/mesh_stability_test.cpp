@@ -1,4 +1,5 @@
 // Where weak methods fail on meshes, and what the product does there instead.
+#include <raster/shade/shaders.hpp>
 #include <raster/rasterize/draw_mesh.hpp>
 #include <raster/render/scene.hpp>
 #include <raster/geometry/shapes.hpp>

@@ -1,5 +1,5 @@
 // Reading OBJ models: geometry, normals, materials, textures, and every kind of bad input.
-#include <raster/geometry/model.hpp>
+#include <raster/io/model.hpp>
 #include <raster/io/obj_file.hpp>
 
 #include "support/model_files.hpp"

@@ -1,5 +1,6 @@
 // The one rasterizer behind every shader, driven directly with test shaders.
-#include "rasterize/shaded_triangle.hpp"
+#include <raster/shade/shaders.hpp>
+#include "rasterize/setup_ortho.hpp"
 
 #include "support/picture.hpp"
 

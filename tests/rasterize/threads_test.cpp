@@ -8,7 +8,8 @@
 #include <raster/geometry/shapes.hpp>
 #include <raster/io/webp.hpp>
 
-#include "camera/clipped_facets.hpp"
+#include <raster/shade/shaders.hpp>
+#include "rasterize/setup_perspective.hpp"
 
 #include "support/model_files.hpp"
 #include "support/scratch.hpp"

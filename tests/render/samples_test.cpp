@@ -2,7 +2,7 @@
 #include <raster/render/samples.hpp>
 #include <raster/render/scene.hpp>
 #include <raster/scenes/diary_scenes.hpp>
-#include <raster/shade/colour.hpp>
+#include <raster/image/colour.hpp>
 
 #include <gtest/gtest.h>
 #include <cmath>

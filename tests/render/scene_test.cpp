@@ -1,4 +1,5 @@
 #include <raster/scenes/diary_scenes.hpp>
+#include <raster/shade/shaders.hpp>
 #include <raster/rasterize/draw_mesh.hpp>
 #include <raster/scenes/palette.hpp>
 #include <raster/render/scene.hpp>

@@ -1,4 +1,4 @@
-#include <raster/shade/colour.hpp>
+#include <raster/image/colour.hpp>
 
 #include <bit>
 #include <cmath>

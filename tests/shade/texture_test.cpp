@@ -1,5 +1,5 @@
 // Textures: coordinates, filters, addressing, mip levels, and reading image files.
-#include <raster/shade/colour.hpp>
+#include <raster/image/colour.hpp>
 #include <raster/shade/texture.hpp>
 #include <raster/io/texture_file.hpp>
 #include <raster/io/webp.hpp>

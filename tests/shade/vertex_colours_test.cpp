@@ -1,5 +1,5 @@
 // Vertex colours: each corner's colour interpolated in linear light, multiplying the diffuse colour.
-#include <raster/shade/colour.hpp>
+#include <raster/image/colour.hpp>
 #include <raster/render/scene.hpp>
 #include <raster/geometry/shapes.hpp>
 

@@ -68,4 +68,11 @@ private:
     glm::dvec2 offset_{0.0, 0.0};  // the sample position, in pixels from the centre
 };
 
+// A pinhole of vertical field of view `fov_degrees` (0 < fov < 180) matching an orthographic
+// camera: the eye moves back along its line of sight until the plane through the world origin
+// keeps the orthographic framing, so a small field of view looks like the orthographic picture
+// and a wide one is seen from close by. Near and far are 1/100 of that distance and 100 beyond
+// it. Throws std::invalid_argument for a field of view out of range or an eye too far out to move.
+[[nodiscard]] PerspectiveCamera perspective_matching(const OrthoCamera& flat, int width, int height, double fov_degrees);
+
 }  // namespace raster

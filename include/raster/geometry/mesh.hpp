@@ -1,6 +1,6 @@
 #pragma once
 
-#include <raster/shade/colour.hpp>
+#include <raster/image/colour.hpp>
 
 #include <array>
 #include <cmath>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include <raster/geometry/model.hpp>
+#include <raster/io/model.hpp>
 #include <raster/io/obj_file.hpp>
 
 #include <cstdint>

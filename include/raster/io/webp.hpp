@@ -2,7 +2,7 @@
 
 #include <raster/io/input_file.hpp>
 
-#include <raster/rasterize/framebuffer.hpp>
+#include <raster/image/framebuffer.hpp>
 #include <raster/io/output_file.hpp>
 
 #include <cstdint>

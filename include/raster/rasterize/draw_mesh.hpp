@@ -1,11 +1,10 @@
 #pragma once
 
 #include <raster/rasterize/depth_buffer.hpp>
-#include <raster/rasterize/framebuffer.hpp>
+#include <raster/image/framebuffer.hpp>
 #include <raster/geometry/mesh.hpp>
 #include <raster/camera/ortho_camera.hpp>
-#include <raster/shade/shaders.hpp>
-#include <raster/shade/textured_shaders.hpp>
+#include <raster/rasterize/shader.hpp>
 
 #include <cstddef>
 #include <optional>
@@ -26,15 +25,9 @@ struct RenderTarget {
 // the fill uses) through the exact convex fill, the shader's Varying interpolated at each
 // covered pixel centre. With a depth buffer a pixel is kept unless something nearer is already
 // there; ties go to the later facet (doc/conventions.md#depth). Returns the facets drawn.
-std::size_t draw_mesh(RenderTarget target, const OrthoCamera& camera, const Mesh& mesh, const FlatShader& shader);
-std::size_t draw_mesh(RenderTarget target, const OrthoCamera& camera, const Mesh& mesh, const GouraudShader& shader);
-std::size_t draw_mesh(RenderTarget target, const OrthoCamera& camera, const Mesh& mesh, const PhongShader& shader);
-std::size_t draw_mesh(RenderTarget target, const OrthoCamera& camera, const Mesh& mesh, const LinearFlatShader& shader);
-std::size_t draw_mesh(RenderTarget target, const OrthoCamera& camera, const Mesh& mesh, const LinearGouraudShader& shader);
-std::size_t draw_mesh(RenderTarget target, const OrthoCamera& camera, const Mesh& mesh, const LinearPhongShader& shader);
-std::size_t draw_mesh(RenderTarget target, const OrthoCamera& camera, const Mesh& mesh, const UnlitShader& shader);
-std::size_t draw_mesh(RenderTarget target, const OrthoCamera& camera, const Mesh& mesh, const TexturedFlatShader& shader);
-std::size_t draw_mesh(RenderTarget target, const OrthoCamera& camera, const Mesh& mesh, const TexturedGouraudShader& shader);
-std::size_t draw_mesh(RenderTarget target, const OrthoCamera& camera, const Mesh& mesh, const TexturedPhongShader& shader);
+// Instantiated for the library's shaders in src/shade/draw_mesh_shaders.cpp; another shader
+// is drawn through the rasterizer's private headers (src/rasterize/setup_ortho.hpp).
+template <Shader S>
+std::size_t draw_mesh(RenderTarget target, const OrthoCamera& camera, const Mesh& mesh, const S& shader);
 
 }  // namespace raster

@@ -1,7 +1,7 @@
 #pragma once
 
-#include <raster/rasterize/framebuffer.hpp>
-#include <raster/rasterize/subpixel.hpp>
+#include <raster/image/framebuffer.hpp>
+#include <raster/image/subpixel.hpp>
 
 #include <cstdint>
 #include <type_traits>

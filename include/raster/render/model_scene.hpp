@@ -1,8 +1,8 @@
 #pragma once
 
 #include <raster/rasterize/depth_buffer.hpp>
-#include <raster/rasterize/framebuffer.hpp>
-#include <raster/geometry/model.hpp>
+#include <raster/image/framebuffer.hpp>
+#include <raster/io/model.hpp>
 #include <raster/render/scene.hpp>
 
 #include <memory>

@@ -1,7 +1,7 @@
 #pragma once
 
 #include <raster/rasterize/depth_buffer.hpp>
-#include <raster/rasterize/framebuffer.hpp>
+#include <raster/image/framebuffer.hpp>
 #include <raster/shade/lighting.hpp>
 #include <raster/shade/linear_lighting.hpp>
 #include <raster/geometry/mesh.hpp>
@@ -133,11 +133,7 @@ private:
     std::vector<std::uint8_t> coverage_;  // of the last frame drawn with more than one sample
 };
 
-// The scene through a pinhole of vertical field of view `fov_degrees` (0 < fov < 180): the eye
-// moves back along its line of sight until the plane through the world origin keeps the
-// orthographic framing, so a small field of view looks like the orthographic picture and a
-// wide one is seen from close by. Near and far are 1/100 of that distance and 100 beyond it.
-// Throws std::invalid_argument for a field of view out of range or an eye too far out to move.
+// The scene through perspective_matching(scene.camera, ...) (raster/camera/perspective_camera.hpp).
 [[nodiscard]] PerspectiveScene in_perspective(const Scene& scene, int width, int height, double fov_degrees);
 
 }  // namespace raster

@@ -1,7 +1,7 @@
 #pragma once
 
 #include <raster/geometry/cube.hpp>
-#include <raster/rasterize/framebuffer.hpp>
+#include <raster/image/framebuffer.hpp>
 
 #include <array>
 

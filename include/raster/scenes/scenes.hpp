@@ -1,6 +1,6 @@
 #pragma once
 
-#include <raster/rasterize/framebuffer.hpp>
+#include <raster/image/framebuffer.hpp>
 
 #include <glm/mat4x4.hpp>
 

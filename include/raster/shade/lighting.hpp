@@ -1,7 +1,7 @@
 #pragma once
 
-#include <raster/rasterize/framebuffer.hpp>
-#include <raster/shade/lanes.hpp>
+#include <raster/image/framebuffer.hpp>
+#include <raster/image/lanes.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -1,29 +1,18 @@
 #pragma once
 
-#include <raster/shade/colour.hpp>
-#include <raster/shade/lanes.hpp>
+#include <raster/image/colour.hpp>
+#include <raster/image/lanes.hpp>
 #include <raster/shade/lighting.hpp>
 #include <raster/shade/linear_lighting.hpp>
 #include <raster/geometry/mesh.hpp>
+#include <raster/rasterize/shader.hpp>
 
 #include <span>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
-// A shader is two stages around the one rasterizer (doc/conventions.md#shading): vertex() turns
-// a corner into a Varying, which the rasterizer interpolates linearly across the triangle, and
-// pixel() turns the interpolated Varying into a colour. kFacetNormal asks for the facet's
-// normal (and its centroid as the position) at every corner instead of the vertex attributes.
+// The library's untextured shaders, each a Shader of the rasterizer (raster/rasterize/shader.hpp).
 namespace raster {
-
-// What the vertex stage sees of one corner, in world space, with its texture coordinate and
-// its colour (white for a mesh without vertex colours).
-struct Corner {
-    glm::vec3 position;
-    glm::vec3 normal;
-    glm::vec2 uv{0.0F};
-    LinearRgb colour{1.0F, 1.0F, 1.0F};
-};
 
 // Lights the corners and interpolates the intensity; with the facet normal at every corner
 // that is one intensity per facet.
@@ -101,7 +90,7 @@ struct LinearPhongShader {
     [[nodiscard]] Rgb pixel(const Varying& point) const noexcept {
         return srgb_from_linear(lighting->shade(point.position, unit_or_zero(point.normal)));
     }
-    // pixel() at up to kLanes points at once, in SIMD lanes (raster/shade/lanes.hpp).
+    // pixel() at up to kLanes points at once, in SIMD lanes (raster/image/lanes.hpp).
     void pixels(std::span<const Varying> points, std::span<Rgb> out) const noexcept {
         LaneVec3 positions, normals;
         LaneRgb diffuse;

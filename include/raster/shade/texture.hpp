@@ -1,8 +1,8 @@
 #pragma once
 
-#include <raster/shade/colour.hpp>
-#include <raster/shade/lanes.hpp>
-#include <raster/rasterize/framebuffer.hpp>
+#include <raster/image/colour.hpp>
+#include <raster/image/lanes.hpp>
+#include <raster/image/framebuffer.hpp>
 
 #include <array>
 #include <cstddef>

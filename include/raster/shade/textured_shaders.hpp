@@ -1,6 +1,6 @@
 #pragma once
 
-#include <raster/shade/colour.hpp>
+#include <raster/image/colour.hpp>
 #include <raster/shade/linear_lighting.hpp>
 #include <raster/shade/shaders.hpp>
 #include <raster/shade/texture.hpp>

@@ -1,4 +1,4 @@
-#include <raster/rasterize/framebuffer.hpp>
+#include <raster/image/framebuffer.hpp>
 
 #include <algorithm>
 #include <cstring>

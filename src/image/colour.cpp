@@ -1,5 +1,5 @@
-#include <raster/shade/colour.hpp>
-#include <raster/shade/lanes.hpp>
+#include <raster/image/colour.hpp>
+#include <raster/image/lanes.hpp>
 
 #include <array>
 #include <cmath>

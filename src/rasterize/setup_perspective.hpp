@@ -1,7 +1,8 @@
 #pragma once
 
 #include "camera/clip_triangle.hpp"
-#include "rasterize/shaded_triangle.hpp"
+#include "rasterize/facet_corners.hpp"
+#include "rasterize/triangle_loop.hpp"
 
 #include <raster/camera/perspective_camera.hpp>
 

@@ -1,4 +1,4 @@
-#include <raster/rasterize/subpixel.hpp>
+#include <raster/image/subpixel.hpp>
 
 #include <cmath>
 #include <cstdint>

@@ -1,4 +1,4 @@
-#include <raster/geometry/model.hpp>
+#include <raster/io/model.hpp>
 
 #include <algorithm>
 #include <limits>

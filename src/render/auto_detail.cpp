@@ -1,7 +1,7 @@
-#include <raster/geometry/auto_detail.hpp>
+#include <raster/render/auto_detail.hpp>
 
 #include <raster/geometry/analytic_shape.hpp>
-#include <raster/shade/colour.hpp>
+#include <raster/image/colour.hpp>
 
 #include <algorithm>
 #include <array>

@@ -1,0 +1,164 @@
+#pragma once
+
+#include <raster/render/scene.hpp>
+
+#include "geometry/posing.hpp"
+#include "rasterize/depth_only.hpp"
+#include "rasterize/multisample_triangle.hpp"
+#include "rasterize/sample_buffer.hpp"
+#include "rasterize/setup_ortho.hpp"
+#include "rasterize/setup_perspective.hpp"
+#include "rasterize/strip_bins.hpp"
+#include "rasterize/worker_team.hpp"
+#include "render/depth_first.hpp"
+#include "render/shader_choice.hpp"
+
+#include <algorithm>
+#include <numeric>
+#include <optional>
+#include <span>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+// A frame's objects drawn on a team of threads: vertices and facets in batches, binned into
+// strips of rows, then the strips.
+namespace raster::detail {
+
+// Items per batch of the front end: about four batches a thread, each between these sizes, so
+// that a small mesh stays on one thread (waking another costs more) and a big one is shared.
+constexpr std::size_t kSmallestBatch = 2048;
+constexpr std::size_t kLargestBatch = 8192;
+
+// Clears to the background, prepares depth only when the scene needs it, and draws every object
+// in three parallel steps on `team`: its vertices posed and put
+// through the front end `front_for(mesh, shader)` in batches, then its facets
+// likewise, each batch binned into strips of rows, then the strips, cleared on the first
+// object's pass and drawn with every batch's triangles in facet order.
+// Multisampling: one with `samples` draws into its sample buffer instead, at its offsets, and
+// resolves every strip into the framebuffer at the end (and the coverage into `alpha`, if any).
+struct Multisampling {
+    detail::SampleBuffer* buffer = nullptr;
+    std::span<const detail::SampleOffset> offsets{};
+    std::uint8_t* alpha = nullptr;
+};
+
+template <detail::Interpolation kMode, typename Camera, typename FrontFor>
+std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& scene, DepthBuffer& depth,
+                           std::optional<glm::vec3> eye, detail::WorkerTeam& team, FrontFor front_for, Multisampling multisampling,
+                           RenderOptions::DepthFirst order) {
+    detail::SampleBuffer* const samples = multisampling.buffer;
+    const bool depth_test = needs_depth(scene);
+    if (depth_test && samples == nullptr) depth.resize(framebuffer.width(), framebuffer.height());  // each strip clears its own rows
+    DepthBuffer* const tested = depth_test && samples == nullptr ? &depth : nullptr;  // samples keep their own depths
+    const glm::vec3 to_eye = -scene.camera.direction();
+    const detail::StripLayout layout = detail::StripLayout::of(framebuffer.width(), framebuffer.height());
+    const auto batch_size = [&](std::size_t items) {
+        const auto share = static_cast<std::size_t>(4 * team.size());
+        return std::clamp((items + share - 1) / share, kSmallestBatch, kLargestBatch);
+    };
+    const auto batches = [](std::size_t items, std::size_t per) { return static_cast<int>((items + per - 1) / per); };
+    const auto range = [](int batch, std::size_t items, std::size_t per) {
+        const std::size_t begin = static_cast<std::size_t>(batch) * per;
+        return std::pair{begin, std::min(items, begin + per)};
+    };
+    bool cleared = false;
+    const auto clear = [&](const PixelRect& strip) {
+        if (samples != nullptr) return samples->clear_rows(strip.y, strip.y + strip.height);
+        framebuffer.clear_rows(strip.y, strip.y + strip.height, scene.background);
+        if (tested != nullptr) tested->clear_rows(strip.y, strip.y + strip.height);
+    };
+    // One object through `shader`: posed, put through the front end, binned and drawn strip by strip.
+    const auto draw_object = [&](const SceneObject& object, const auto& shader) {
+        using Shader = std::remove_cvref_t<decltype(shader)>;
+        const bool per_facet = Shader::kFacetNormal || object.mesh->surface == Surface::faceted;
+        detail::check_drawable(framebuffer, tested, *object.mesh);  // before posing reads its facets
+        detail::Posing posing(*object.mesh, object.model, {.vertex_normals = !per_facet, .facet_normals = per_facet});
+        const Mesh& mesh = posing.mesh();  // sized now, filled by the batches below
+        auto front = front_for(mesh, shader);
+        const std::size_t vertices = mesh.positions.size(), facets = mesh.facets.size();
+        const std::size_t vertex_batch = batch_size(vertices), facet_batch = batch_size(facets);
+        team.for_each(batches(vertices, vertex_batch), [&](int b) {
+            const auto [begin, end] = range(b, vertices, vertex_batch);
+            posing.vertices(begin, end);
+            front.vertices(begin, end);  // reads vertex i's posed data only
+        });
+        std::vector<detail::StripBins<typename Shader::Varying>> bins(static_cast<std::size_t>(batches(facets, facet_batch)),
+                                                                      detail::StripBins<typename Shader::Varying>(layout, samples != nullptr ? kSubpixelOne / 2 : 0));
+        std::vector<std::size_t> counted(bins.size());
+        team.for_each(static_cast<int>(bins.size()), [&](int b) {
+            const auto [begin, end] = range(b, facets, facet_batch);
+            detail::StripBins<typename Shader::Varying>& batch = bins[static_cast<std::size_t>(b)];
+            batch.reserve(end - begin);
+            posing.facets(begin, end);  // facet f reads its own posed corners and normal only
+            counted[static_cast<std::size_t>(b)] = front.facets(begin, end, [&](const auto& corners) { batch.add(corners); });
+            batch.finish();
+        });
+        team.for_each(layout.count(), [&](int s) {
+            const PixelRect strip = layout.strip(s);
+            if (!cleared) clear(strip);
+            detail::LaneBatch<Shader> lanes(shader);  // open across the strip's triangles: full batches on small ones
+            for (const auto& batch : bins) {
+                batch.for_each_in(s, [&](const auto& corners) {
+                    if (samples != nullptr) {
+                        detail::shade_triangle_samples<Shader, kMode>(*samples, depth_test, corners, shader, strip, multisampling.offsets, &lanes);
+                    } else {
+                        detail::shade_triangle<Shader, detail::FloatDepth, kMode>(framebuffer, tested, corners, shader, {}, strip, &lanes);
+                    }
+                });
+            }
+            lanes.flush();
+        });
+        cleared = true;
+        return std::accumulate(counted.begin(), counted.end(), std::size_t{0});
+    };
+    const bool depth_pass = depth_test && (order == RenderOptions::DepthFirst::always ||
+                                           (order == RenderOptions::DepthFirst::automatic &&
+                                            detail::depth_first(scene, depth_test, framebuffer.width(), framebuffer.height())));
+    if (depth_pass) {
+        // Every object's depth first, then the shading pass colours only the fragments at the
+        // nearest depth: the same picture (the last facet at that depth wins, as it would),
+        // without shading the surfaces hidden behind it.
+        for (const SceneObject& object : scene.objects) {
+            if (object.mesh) draw_object(object, detail::DepthOnlyShader{});
+        }
+    }
+    std::size_t drawn = 0;
+    for (const SceneObject& object : scene.objects) {
+        if (!object.mesh) continue;  // an object without a mesh shows nothing
+        drawn += draw_shaded(object, scene.lights, scene.point_lights, to_eye, eye, scene.darkening,
+                             [&](const auto& shader) { return draw_object(object, shader); });
+    }
+    if (!cleared) {
+        team.for_each(layout.count(), [&](int s) { clear(layout.strip(s)); });
+    }
+    if (samples != nullptr) {
+        team.for_each(layout.count(), [&](int s) {
+            const PixelRect strip = layout.strip(s);
+            samples->resolve_rows(strip.y, strip.y + strip.height, framebuffer, scene.background, multisampling.alpha);
+        });
+    }
+    return drawn;
+}
+
+inline std::size_t draw(Framebuffer& framebuffer, const Scene& scene, DepthBuffer& depth, detail::WorkerTeam& team, RenderOptions::DepthFirst order,
+                 Multisampling multisampling = {}) {
+    // Orthographic: attributes are linear on screen, and the direction toward the viewer is the same at every pixel.
+    return render_objects<detail::Interpolation::screen_linear>(framebuffer, scene, depth, std::nullopt, team,
+                                                                [&](const Mesh& mesh, const auto& shader) {
+                                                                    return detail::OrthoFront(scene.camera, mesh, shader);
+                                                                },
+                                                                multisampling, order);
+}
+
+inline std::size_t draw(Framebuffer& framebuffer, const PerspectiveScene& scene, DepthBuffer& depth, detail::WorkerTeam& team,
+                 RenderOptions::DepthFirst order, Multisampling multisampling = {}) {
+    // Phase 2 takes the direction toward the eye at every point.
+    return render_objects<detail::Interpolation::perspective>(
+        framebuffer, scene, depth, scene.camera.eye(), team, [&](const Mesh& mesh, const auto& shader) {
+            return detail::PerspectiveFront(framebuffer, scene.camera, mesh, shader, detail::kGuardBandPixels);
+        },
+        multisampling, order);
+}
+
+}  // namespace raster::detail

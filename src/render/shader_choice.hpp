@@ -1,0 +1,58 @@
+#pragma once
+
+#include <raster/render/scene.hpp>
+#include <raster/shade/shaders.hpp>
+#include <raster/shade/textured_shaders.hpp>
+
+#include <optional>
+#include <span>
+#include <variant>
+
+// Which of the library's shaders draws an object: chosen by its material, shading method,
+// texture and vertex colours.
+namespace raster::detail {
+
+// Lights one object by its material and hands `draw` the shader its shading method asks for.
+// `eye` is the viewer's position in perspective; orthographic views have `to_eye` alone.
+template <typename Draw>
+std::size_t draw_shaded(const SceneObject& object, std::span<const DirectionalLight> lights,
+                        std::span<const PointLight> points, glm::vec3 to_eye, std::optional<glm::vec3> eye,
+                        std::optional<DepthDarkening> darkening, Draw draw) {
+    if (const auto* phase1 = std::get_if<Material>(&object.material)) {
+        // Phase 1's model has one viewer direction, the camera's, even in perspective.
+        const Lighting lighting(*phase1, lights, to_eye);
+        switch (object.shading) {
+        case ShadingMethod::flat: return draw(FlatShader{&lighting});
+        case ShadingMethod::gouraud: return draw(GouraudShader{&lighting});
+        case ShadingMethod::phong: return draw(PhongShader{&lighting});
+        case ShadingMethod::unlit: return draw(UnlitShader{{linear_from_srgb(phase1->base)}});
+        }
+        return 0;
+    }
+    const PhongMaterial& material = std::get<PhongMaterial>(object.material);
+    const LinearLighting lighting(material, lights, points, to_eye, eye, darkening);
+    const DiffuseSource diffuse{material.diffuse, object.texture.get(), object.sampler};
+    if (!object.mesh->colours.empty()) {  // the corners' colours interpolated to every pixel
+        switch (object.shading) {
+        case ShadingMethod::flat: return draw(TintedFlatShader{&lighting, diffuse});
+        case ShadingMethod::gouraud: return draw(TintedGouraudShader{&lighting, diffuse});
+        case ShadingMethod::unlit: return draw(TintedUnlitShader{diffuse});
+        default: return draw(TintedPhongShader{&lighting, diffuse});
+        }
+    }
+    if (object.shading == ShadingMethod::unlit) return draw(UnlitShader{diffuse});
+    if (object.texture) {  // the textured shaders read the texture at every pixel
+        switch (object.shading) {
+        case ShadingMethod::flat: return draw(TexturedFlatShader{&lighting, diffuse});
+        case ShadingMethod::gouraud: return draw(TexturedGouraudShader{&lighting, diffuse});
+        default: return draw(TexturedPhongShader{&lighting, diffuse});
+        }
+    }
+    switch (object.shading) {
+    case ShadingMethod::flat: return draw(LinearFlatShader{&lighting});
+    case ShadingMethod::gouraud: return draw(LinearGouraudShader{&lighting});
+    default: return draw(LinearPhongShader{&lighting});
+    }
+}
+
+}  // namespace raster::detail
