@@ -99,7 +99,7 @@ raster::Mesh with_facet_ids(const raster::Mesh& mesh) {
 raster::PerspectiveScene raster_scene(const Case& c, const std::shared_ptr<const raster::Mesh>& mesh, int frame, int frames) {
     const raster::PerspectiveCamera camera = raster::PerspectiveCamera::look_at(c.width, c.height, kEye, glm::vec3(0), {0, 1, 0}, kLens);
     raster::PerspectiveScene scene{camera, {0, 0, 0}, {{kLight, 1.0F}}, {}, {}};
-    const raster::Material material{{52, 110, 210}, 0.25F, 0.75F, std::nullopt};
+    const raster::IntensityMaterial material{{52, 110, 210}, 0.25F, 0.75F, std::nullopt};
     scene.objects.push_back({mesh, tumble(frame, frames, scale_of(c.name)), material, raster::ShadingMethod::flat});
     return scene;
 }

@@ -217,7 +217,7 @@ void GlScene::draw_scene(const GlContext& context, const raster::BasicScene<Came
     glEnableVertexAttribArray(1);
     glEnableVertexAttribArray(2);
     for (const raster::SceneObject& object : scene.objects) {
-        const auto* material = std::get_if<raster::PhongMaterial>(&object.material);
+        const auto* material = std::get_if<raster::LinearMaterial>(&object.material);
         if (!object.mesh || material == nullptr) throw std::runtime_error("the GLSL side draws Phase 2 materials only");
         const GLuint used = program(lights + "#define SHINY " + (material->shininess ? "1" : "0") + "\n#define TEXTURED " +
                                     (object.texture ? "1" : "0") + "\n");

@@ -115,7 +115,7 @@ std::vector<double> sampled(const std::vector<Triangle>& frame, int samples, boo
     }
     mesh->normals.assign(mesh->positions.size(), {0.0F, 0.0F, -1.0F});
     raster::Scene scene{raster::OrthoCamera(kSide, kSide), {0, 0, 0}, {}, {}, {}};
-    scene.objects.push_back({mesh, glm::mat4(1.0F), raster::PhongMaterial{{0, 0, 0}, {1, 1, 1}, {0, 0, 0}, {}}, raster::ShadingMethod::unlit});
+    scene.objects.push_back({mesh, glm::mat4(1.0F), raster::LinearMaterial{{0, 0, 0}, {1, 1, 1}, {0, 0, 0}, {}}, raster::ShadingMethod::unlit});
     raster::Framebuffer image(kSide, kSide);
     raster::DepthBuffer depth;
     raster::render(image, scene, depth, {1, samples, every});

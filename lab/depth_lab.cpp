@@ -71,8 +71,8 @@ void draw_pair(raster::Framebuffer& image, raster::DepthBuffer& depth, const ras
                Format format) {
     image.clear({0, 0, 0});
     depth.prepare(kSize, kSize);
-    const raster::Lighting first({kFirst, 1.0F, 0.0F, {}}, {}, {0, 0, -1});
-    const raster::Lighting second({kSecond, 1.0F, 0.0F, {}}, {}, {0, 0, -1});
+    const raster::IntensityLighting first({kFirst, 1.0F, 0.0F, {}}, {}, {0, 0, -1});
+    const raster::IntensityLighting second({kSecond, 1.0F, 0.0F, {}}, {}, {0, 0, -1});
     raster::detail::draw_facets(image, &depth, camera, pair.first, raster::FlatShader{&first}, format);
     raster::detail::draw_facets(image, &depth, camera, pair.second, raster::FlatShader{&second}, format);
 }

@@ -20,7 +20,7 @@ std::uint8_t rounded(double value) {
 
 }  // namespace
 
-double exact_intensity(const raster::Material& material, std::span<const raster::DirectionalLight> lights,
+double exact_intensity(const raster::IntensityMaterial& material, std::span<const raster::DirectionalLight> lights,
                        glm::dvec3 normal, glm::dvec3 to_eye) {
     double lit = 0.0;
     for (const raster::DirectionalLight& light : lights) {

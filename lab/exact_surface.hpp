@@ -1,7 +1,7 @@
 #pragma once
 
 #include <raster/image/framebuffer.hpp>
-#include <raster/shade/lighting.hpp>
+#include <raster/shade/intensity_lighting.hpp>
 #include <raster/camera/ortho_camera.hpp>
 #include <raster/geometry/shapes.hpp>
 
@@ -18,7 +18,7 @@ namespace lab {
 struct ExactObject {
     raster::ShapeKind shape;
     glm::mat4 model;
-    raster::Material material;
+    raster::IntensityMaterial material;
 };
 
 struct ExactImage {
@@ -28,7 +28,7 @@ struct ExactImage {
 };
 
 // The intensity of the Phase 1 model in double precision for a unit normal.
-[[nodiscard]] double exact_intensity(const raster::Material& material, std::span<const raster::DirectionalLight> lights,
+[[nodiscard]] double exact_intensity(const raster::IntensityMaterial& material, std::span<const raster::DirectionalLight> lights,
                                      glm::dvec3 normal, glm::dvec3 to_eye);
 
 [[nodiscard]] ExactImage ray_cast(const raster::OrthoCamera& camera, int width, int height,

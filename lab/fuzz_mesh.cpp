@@ -77,7 +77,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         for (int k = 0; k < 12 && input.ConsumeBool(); ++k) model[k / 3][k % 3] = any_float(input);
         raster::SurfaceMaterial material;
         if (input.ConsumeBool()) {
-            raster::Material phase1{{input.ConsumeIntegral<std::uint8_t>(), input.ConsumeIntegral<std::uint8_t>(), 200},
+            raster::IntensityMaterial phase1{{input.ConsumeIntegral<std::uint8_t>(), input.ConsumeIntegral<std::uint8_t>(), 200},
                                     any_float(input), any_float(input), {}};
             if (input.ConsumeBool()) phase1.shininess = any_float(input);
             material = phase1;
@@ -86,7 +86,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                 const float r = any_float(input), g = any_float(input);
                 return raster::LinearRgb{r, g, any_float(input)};
             };
-            raster::PhongMaterial phase2{colour(), colour(), colour(), {}};
+            raster::LinearMaterial phase2{colour(), colour(), colour(), {}};
             if (input.ConsumeBool()) phase2.shininess = any_float(input);
             material = phase2;
         }

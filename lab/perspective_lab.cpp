@@ -221,7 +221,7 @@ ClippingRow measure_clipping(std::string_view name, int fov) {
         depth.prepare(kWidth, kHeight);
         for (const raster::SceneObject& object : scene.objects) {
             const raster::Mesh mesh = raster::posed(*object.mesh, object.model);
-            const raster::LinearLighting lighting(std::get<raster::PhongMaterial>(object.material), scene.lights,
+            const raster::LinearLighting lighting(std::get<raster::LinearMaterial>(object.material), scene.lights,
                                                   scene.point_lights, -scene.camera.direction(), scene.camera.eye());
             raster::detail::draw_facets_in_perspective(image, &depth, scene.camera, mesh, raster::LinearPhongShader{&lighting}, band);
         }

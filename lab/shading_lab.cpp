@@ -47,11 +47,11 @@ std::vector<ShadingRow> measure_shading(int repetitions) {
     for (Case& c : cases) {
         c.scene.background = kNoSurface;
         const raster::SceneObject& object = c.scene.objects.front();
-        const std::vector<ExactObject> exact{{c.kind, object.model, std::get<raster::Material>(object.material)}};
+        const std::vector<ExactObject> exact{{c.kind, object.model, std::get<raster::IntensityMaterial>(object.material)}};
         const ExactImage reference = ray_cast(c.scene.camera, kWidth, kHeight, exact, c.scene.lights, kNoSurface);
         const raster::DetailChoice chosen =
-            raster::choose_detail(c.kind, object.model, c.scene.camera, std::get<raster::Material>(object.material), c.scene.lights);
-        const raster::Lighting lighting(std::get<raster::Material>(object.material), c.scene.lights, -c.scene.camera.direction());
+            raster::choose_detail(c.kind, object.model, c.scene.camera, std::get<raster::IntensityMaterial>(object.material), c.scene.lights);
+        const raster::IntensityLighting lighting(std::get<raster::IntensityMaterial>(object.material), c.scene.lights, -c.scene.camera.direction());
         const double stretch = c.scene.camera.scale() * raster::model_stretch(object.model).most;
         std::vector<raster::Scene> variants;
         for (const int level : c.levels) {

@@ -7,7 +7,7 @@
 
 namespace raster {
 
-PhongMaterial default_model_material() noexcept {
+LinearMaterial default_model_material() noexcept {
     return {LinearRgb{}, LinearRgb{0.8F, 0.8F, 0.8F}, LinearRgb{}, std::nullopt};
 }
 

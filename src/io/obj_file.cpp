@@ -181,12 +181,12 @@ detail::PolygonSoup soup_from(const tinyobj::attrib_t& attrib, const std::vector
     return soup;
 }
 
-PhongMaterial material_from(const tinyobj::material_t& m) {
+LinearMaterial material_from(const tinyobj::material_t& m) {
     const auto colour = [](const tinyobj::real_t* c) {
         const auto usable = [](tinyobj::real_t v) { return std::isfinite(v) ? std::max(0.0F, v) : 0.0F; };
         return LinearRgb{usable(c[0]), usable(c[1]), usable(c[2])};
     };
-    PhongMaterial material{colour(m.emission), colour(m.diffuse), colour(m.specular), std::nullopt};
+    LinearMaterial material{colour(m.emission), colour(m.diffuse), colour(m.specular), std::nullopt};
     const bool has_specular = material.specular != LinearRgb{};
     if (has_specular && std::isfinite(m.shininess) && m.shininess > 0.0F) material.shininess = m.shininess;
     return material;

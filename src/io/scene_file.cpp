@@ -186,7 +186,7 @@ bool finite(const aiVector3D& v) { return std::isfinite(v.x) && std::isfinite(v.
 // A glTF metallic-roughness material as raster's Phong (doc/conventions.md#models): the base
 // colour is diffuse as far as the surface is not metal; the highlight is 4 % white for a
 // dielectric and the base colour for a metal, as sharp as the roughness allows.
-PhongMaterial material_from(const aiMaterial& m) {
+LinearMaterial material_from(const aiMaterial& m) {
     aiColor4D base(0.8F, 0.8F, 0.8F, 1.0F);
     if (m.Get(AI_MATKEY_BASE_COLOR, base) != AI_SUCCESS) m.Get(AI_MATKEY_COLOR_DIFFUSE, base);
     float metallic = 0.0F, roughness = 1.0F;
@@ -196,7 +196,7 @@ PhongMaterial material_from(const aiMaterial& m) {
     metallic = usable(metallic, 0.0F);
     roughness = usable(roughness, 1.0F);
     const LinearRgb colour{std::max(0.0F, usable(base.r, 0.8F)), std::max(0.0F, usable(base.g, 0.8F)), std::max(0.0F, usable(base.b, 0.8F))};
-    PhongMaterial material{LinearRgb{}, colour * (1.0F - metallic), LinearRgb{}, std::nullopt};
+    LinearMaterial material{LinearRgb{}, colour * (1.0F - metallic), LinearRgb{}, std::nullopt};
     const float alpha = roughness * roughness;
     if (pbr && alpha < 0.95F) {
         const float f0 = 0.04F * (1.0F - metallic);
@@ -234,8 +234,8 @@ public:
     }
 
     // Each material's colour and diffuse map; a map that cannot be read is a warning.
-    std::vector<std::pair<PhongMaterial, std::shared_ptr<const Texture>>> materials() {
-        std::vector<std::pair<PhongMaterial, std::shared_ptr<const Texture>>> out;
+    std::vector<std::pair<LinearMaterial, std::shared_ptr<const Texture>>> materials() {
+        std::vector<std::pair<LinearMaterial, std::shared_ptr<const Texture>>> out;
         for (unsigned i = 0; i < scene_.mNumMaterials; ++i) {
             const aiMaterial& m = *scene_.mMaterials[i];
             out.emplace_back(material_from(m), options_.load_textures ? map_of(m) : nullptr);

@@ -59,10 +59,10 @@ double surface_deviation(ShapeKind shape, const Mesh& mesh) {
 
 namespace {
 
-// What the estimate needs of a surface's light, Phase 1: the intensity a Gouraud shader
+// What the estimate needs of a surface's light in 8-bit intensity: the intensity a Gouraud shader
 // interpolates, and how far apart two intensities are in 8-bit levels of the brightest channel.
 struct IntensityModel {
-    const Lighting& lighting;
+    const IntensityLighting& lighting;
     double brightest;
     using Value = float;
     [[nodiscard]] Value value(glm::vec3 /*position*/, glm::vec3 normal) const { return lighting.intensity(normal); }
@@ -72,7 +72,7 @@ struct IntensityModel {
     }
 };
 
-// Phase 2: the linear colour a Gouraud shader interpolates, compared after the clamp and the
+// In linear light: the colour a Gouraud shader interpolates, compared after the clamp and the
 // sRGB encoding (unrounded), the largest channel difference.
 struct LinearModel {
     const LinearLighting& lighting;
@@ -148,7 +148,7 @@ double error_levels(ShapeKind shape, const Mesh& posed_mesh, const glm::mat4& mo
 }  // namespace
 
 double shading_error_levels(ShapeKind shape, const Mesh& posed_mesh, const glm::mat4& model, const OrthoCamera& camera,
-                            ShadingMethod method, const Lighting& lighting) {
+                            ShadingMethod method, const IntensityLighting& lighting) {
     const Rgb base = lighting.material.base;
     const IntensityModel light{lighting, static_cast<double>(std::max({base.r, base.g, base.b}))};
     return error_levels(shape, posed_mesh, model, camera, method, light);
@@ -188,12 +188,12 @@ DetailChoice choose(ShapeKind shape, const glm::mat4& model, const OrthoCamera& 
 
 }  // namespace
 
-DetailChoice choose_detail(ShapeKind shape, const glm::mat4& model, const OrthoCamera& camera, const Material& material,
+DetailChoice choose_detail(ShapeKind shape, const glm::mat4& model, const OrthoCamera& camera, const IntensityMaterial& material,
                            std::span<const DirectionalLight> lights) {
-    return choose(shape, model, camera, Lighting(material, lights, -camera.direction()));
+    return choose(shape, model, camera, IntensityLighting(material, lights, -camera.direction()));
 }
 
-DetailChoice choose_detail(ShapeKind shape, const glm::mat4& model, const OrthoCamera& camera, const PhongMaterial& material,
+DetailChoice choose_detail(ShapeKind shape, const glm::mat4& model, const OrthoCamera& camera, const LinearMaterial& material,
                            std::span<const DirectionalLight> lights, std::span<const PointLight> points) {
     return choose(shape, model, camera, LinearLighting(material, lights, points, -camera.direction()));
 }
@@ -208,11 +208,11 @@ DetailPlan plan_detail(std::span<const Scene> samples) {
         for (std::size_t i = 0; i < objects && i < frame.objects.size(); ++i) {
             const SceneObject& object = frame.objects[i];
             if (!object.shape) continue;
-            const auto* phase1 = std::get_if<Material>(&object.material);
+            const auto* intensity = std::get_if<IntensityMaterial>(&object.material);
             const DetailChoice choice =
-                phase1 != nullptr ? choose_detail(*object.shape, object.model, frame.camera, *phase1, frame.lights)
+                intensity != nullptr ? choose_detail(*object.shape, object.model, frame.camera, *intensity, frame.lights)
                                   : choose_detail(*object.shape, object.model, frame.camera,
-                                                  std::get<PhongMaterial>(object.material), frame.lights, frame.point_lights);
+                                                  std::get<LinearMaterial>(object.material), frame.lights, frame.point_lights);
             std::optional<DetailChoice>& kept = plan.choices[i];
             if (!kept) {
                 kept = choice;

@@ -153,7 +153,7 @@ inline std::size_t draw(Framebuffer& framebuffer, const Scene& scene, DepthBuffe
 
 inline std::size_t draw(Framebuffer& framebuffer, const PerspectiveScene& scene, DepthBuffer& depth, detail::WorkerTeam& team,
                  RenderOptions::DepthFirst order, Multisampling multisampling = {}) {
-    // Phase 2 takes the direction toward the eye at every point.
+    // Linear light takes the direction toward the eye at every point.
     return render_objects<detail::Interpolation::perspective>(
         framebuffer, scene, depth, scene.camera.eye(), team, [&](const Mesh& mesh, const auto& shader) {
             return detail::PerspectiveFront(framebuffer, scene.camera, mesh, shader, detail::kGuardBandPixels);

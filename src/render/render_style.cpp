@@ -22,7 +22,7 @@ LinearRgb mean_colour(const Texture& texture) {
 template <typename Camera>
 BasicScene<Camera> flattened(BasicScene<Camera> scene) {
     for (SceneObject& object : scene.objects) {
-        if (auto* material = std::get_if<PhongMaterial>(&object.material); material != nullptr && object.texture) {
+        if (auto* material = std::get_if<LinearMaterial>(&object.material); material != nullptr && object.texture) {
             const LinearRgb mean = mean_colour(*object.texture);
             material->diffuse = {material->diffuse.r * mean.r, material->diffuse.g * mean.g, material->diffuse.b * mean.b};
         }
@@ -33,8 +33,8 @@ BasicScene<Camera> flattened(BasicScene<Camera> scene) {
 }
 
 Rgb line_colour(const SceneObject& object) {
-    if (const auto* material = std::get_if<Material>(&object.material)) return material->base;
-    const auto& material = std::get<PhongMaterial>(object.material);
+    if (const auto* material = std::get_if<IntensityMaterial>(&object.material)) return material->base;
+    const auto& material = std::get<LinearMaterial>(object.material);
     const LinearRgb mean = object.texture ? mean_colour(*object.texture) : LinearRgb{1.0F, 1.0F, 1.0F};
     return srgb_from_linear(LinearRgb{material.emissive.r + material.diffuse.r * mean.r, material.emissive.g + material.diffuse.g * mean.g,
                                       material.emissive.b + material.diffuse.b * mean.b});

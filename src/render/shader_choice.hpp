@@ -18,18 +18,18 @@ template <typename Draw>
 std::size_t draw_shaded(const SceneObject& object, std::span<const DirectionalLight> lights,
                         std::span<const PointLight> points, glm::vec3 to_eye, std::optional<glm::vec3> eye,
                         std::optional<DepthDarkening> darkening, Draw draw) {
-    if (const auto* phase1 = std::get_if<Material>(&object.material)) {
-        // Phase 1's model has one viewer direction, the camera's, even in perspective.
-        const Lighting lighting(*phase1, lights, to_eye);
+    if (const auto* intensity = std::get_if<IntensityMaterial>(&object.material)) {
+        // The intensity model has one viewer direction, the camera's, even in perspective.
+        const IntensityLighting lighting(*intensity, lights, to_eye);
         switch (object.shading) {
         case ShadingMethod::flat: return draw(FlatShader{&lighting});
         case ShadingMethod::gouraud: return draw(GouraudShader{&lighting});
         case ShadingMethod::phong: return draw(PhongShader{&lighting});
-        case ShadingMethod::unlit: return draw(UnlitShader{{linear_from_srgb(phase1->base)}});
+        case ShadingMethod::unlit: return draw(UnlitShader{{linear_from_srgb(intensity->base)}});
         }
         return 0;
     }
-    const PhongMaterial& material = std::get<PhongMaterial>(object.material);
+    const LinearMaterial& material = std::get<LinearMaterial>(object.material);
     const LinearLighting lighting(material, lights, points, to_eye, eye, darkening);
     const DiffuseSource diffuse{material.diffuse, object.texture.get(), object.sampler};
     if (!object.mesh->colours.empty()) {  // the corners' colours interpolated to every pixel

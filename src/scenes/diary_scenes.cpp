@@ -83,8 +83,8 @@ void add_phase2_lights(Scene& scene, std::ptrdiff_t id) {
     }
 }
 
-PhongMaterial torus_material(std::ptrdiff_t id) {
-    return PhongMaterial::from_srgb(kEmissive, kDiffuse, id < kPointLights ? kFirstSpecular : kSpecular, kPhongShininess);
+LinearMaterial torus_material(std::ptrdiff_t id) {
+    return LinearMaterial::from_srgb(kEmissive, kDiffuse, id < kPointLights ? kFirstSpecular : kSpecular, kPhongShininess);
 }
 
 glm::mat4 scale(glm::vec3 s) { return glm::scale(glm::mat4(1.0F), s); }
@@ -197,8 +197,8 @@ Scene DiaryScene::untagged_still(int width, int height) const {
     if (is_phase2(info_ - kScenes.data())) return phase2(width, height, std::nullopt);
     const OrthoCamera front(width, height);
     const OrthoCamera raised = OrthoCamera::look_at(width, height, kStillEye);
-    const Material matte = Material::matte(kShapeColour, 0.25F);
-    const Material shiny = Material::shiny(kShapeColour, 0.15F, 100.0F);
+    const IntensityMaterial matte = IntensityMaterial::matte(kShapeColour, 0.25F);
+    const IntensityMaterial shiny = IntensityMaterial::shiny(kShapeColour, 0.15F, 100.0F);
     switch (info_ - kScenes.data()) {
     case kLitCube:
     case kDodecahedron:
@@ -209,14 +209,14 @@ Scene DiaryScene::untagged_still(int width, int height) const {
     }
     case kFacetedSphere: {
         Scene scene = lit_scene(raised, kSunFromRight);
-        scene.objects.push_back({still_shape_, scale(0.5F), Material::matte(kShapeColour, 0.1F), ShadingMethod::flat});
+        scene.objects.push_back({still_shape_, scale(0.5F), IntensityMaterial::matte(kShapeColour, 0.1F), ShadingMethod::flat});
         return scene;
     }
     case kSmoothSphere:
     case kGlossySphere: {
         Scene scene = lit_scene(raised, kSunFromRight);
         const bool glossy = info_ - kScenes.data() == kGlossySphere;
-        scene.objects.push_back({still_shape_, scale(0.5F), glossy ? shiny : Material::matte(kShapeColour, 0.2F),
+        scene.objects.push_back({still_shape_, scale(0.5F), glossy ? shiny : IntensityMaterial::matte(kShapeColour, 0.2F),
                                  ShadingMethod::gouraud});
         return scene;
     }
@@ -232,7 +232,7 @@ Scene DiaryScene::untagged_still(int width, int height) const {
     }
     case kTwoSpheres: {
         Scene scene = lit_scene(OrthoCamera::look_at(width, height, {0.0F, 0.5F, -1.0F}), kHighLeftLamp);
-        scene.objects.push_back({ground_, glm::mat4(1.0F), Material::matte(kTerracotta, 0.15F), ShadingMethod::flat});
+        scene.objects.push_back({ground_, glm::mat4(1.0F), IntensityMaterial::matte(kTerracotta, 0.15F), ShadingMethod::flat});
         scene.objects.push_back({shape_, placed({0.0F, 0.25F, 0.0F}, 0.5F), shiny, ShadingMethod::phong});
         return scene;
     }
@@ -247,8 +247,8 @@ Scene DiaryScene::untagged_still(int width, int height) const {
 Scene DiaryScene::untagged_frame(int width, int height, int index, int count) const {
     if (is_phase2(info_ - kScenes.data())) return phase2(width, height, tumble_angle(index, count));
     const double turn = static_cast<double>(index) / std::max(count, 1);
-    const Material matte = Material::matte(kShapeColour, 0.25F);
-    const Material shiny = Material::shiny(kShapeColour, 0.15F, 100.0F);
+    const IntensityMaterial matte = IntensityMaterial::matte(kShapeColour, 0.25F);
+    const IntensityMaterial shiny = IntensityMaterial::shiny(kShapeColour, 0.15F, 100.0F);
     const OrthoCamera pinned = OrthoCamera::look_at(width, height, {0.0F, kOrbitHeight, -1.0F});
     const HalfClip clip = half_clip(index, count);
     switch (info_ - kScenes.data()) {
@@ -274,7 +274,7 @@ Scene DiaryScene::untagged_frame(int width, int height, int index, int count) co
     case kTwoSpheres: {
         Scene scene = lit_scene(OrthoCamera::look_at(width, height, orbit_eye(ease_in_out_cubic(turn))), kLowSun);
         scene.objects.push_back({shape_, placed({-0.5F, 0.0F, 0.0F}, 0.4F), shiny, ShadingMethod::phong});
-        Material second = shiny;
+        IntensityMaterial second = shiny;
         second.base = kSecondColour;
         scene.objects.push_back({shape_, placed({0.5F, 0.0F, 0.0F}, 0.3F), second, ShadingMethod::phong});
         return scene;
@@ -308,9 +308,9 @@ Scene DiaryScene::phase2(int width, int height, std::optional<float> angle) cons
         const glm::vec3 lamp = angle ? glm::vec3(kLampCircle * std::sin(a), kLampHeight, -kLampCircle * std::cos(a))
                                      : glm::vec3(0.0F, kLampHeight, 0.0F);
         scene.point_lights = {{lamp, 1.0F, kDiaryFalloff}};
-        scene.objects.push_back({ground_, glm::mat4(1.0F), PhongMaterial::from_srgb(kBlack, kDiffuse, kBlack, std::nullopt),
+        scene.objects.push_back({ground_, glm::mat4(1.0F), LinearMaterial::from_srgb(kBlack, kDiffuse, kBlack, std::nullopt),
                                  ShadingMethod::phong});
-        scene.objects.push_back({shape_, placed(lamp, 0.04F), PhongMaterial::from_srgb(kGold, kBlack, kBlack, std::nullopt),
+        scene.objects.push_back({shape_, placed(lamp, 0.04F), LinearMaterial::from_srgb(kGold, kBlack, kBlack, std::nullopt),
                                  ShadingMethod::phong});
         return scene;
     }

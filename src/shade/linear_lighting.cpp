@@ -24,11 +24,11 @@ bool usable(const PointLight& light) noexcept {
 
 }  // namespace
 
-PhongMaterial PhongMaterial::from_srgb(Rgb emissive, Rgb diffuse, Rgb specular, std::optional<float> shininess) {
+LinearMaterial LinearMaterial::from_srgb(Rgb emissive, Rgb diffuse, Rgb specular, std::optional<float> shininess) {
     return {linear_from_srgb(emissive), linear_from_srgb(diffuse), linear_from_srgb(specular), shininess};
 }
 
-LinearLighting::LinearLighting(const PhongMaterial& material, std::span<const DirectionalLight> directional,
+LinearLighting::LinearLighting(const LinearMaterial& material, std::span<const DirectionalLight> directional,
                                std::span<const PointLight> points, glm::vec3 to_eye,
                                std::optional<glm::vec3> eye_position, std::optional<DepthDarkening> darkening)
     : material_(material), to_eye_(unit_or_zero(to_eye)), eye_(eye_position), power_(material.shininess), darkening_(darkening) {

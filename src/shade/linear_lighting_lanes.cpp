@@ -96,7 +96,7 @@ Floats attenuated_lanes(const PreparedPointLight& light, const Floats& distance,
     const Mask unlit = lanes::dot(normal, normal) == 0.0F;
     stdx::where(unlit, diffuse) = 0.0F;
     stdx::where(unlit, specular) = 0.0F;
-    const PhongMaterial& m = material_;
+    const LinearMaterial& m = material_;
     const Floats r = m.emissive.r + lanes::load(diffuse_colours.r) * diffuse + m.specular.r * specular;
     const Floats g = m.emissive.g + lanes::load(diffuse_colours.g) * diffuse + m.specular.g * specular;
     const Floats b = m.emissive.b + lanes::load(diffuse_colours.b) * diffuse + m.specular.b * specular;

@@ -1,7 +1,7 @@
 #pragma once
 
 #include <raster/image/lanes.hpp>
-#include <raster/shade/lighting.hpp>
+#include <raster/shade/intensity_lighting.hpp>
 
 #include <experimental/simd>
 #include <limits>

@@ -29,7 +29,7 @@ PerspectiveCamera ahead(int width, int height, PerspectiveCamera::Lens lens = kR
 }
 
 // White wherever the surface shows, whatever the light: emissive only.
-raster::PhongMaterial white() { return {{1, 1, 1}, {0, 0, 0}, {0, 0, 0}, std::nullopt}; }
+raster::LinearMaterial white() { return {{1, 1, 1}, {0, 0, 0}, {0, 0, 0}, std::nullopt}; }
 
 raster::Mesh triangle(glm::vec3 a, glm::vec3 b, glm::vec3 c) {
     raster::Mesh mesh;

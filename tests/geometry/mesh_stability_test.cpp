@@ -45,7 +45,7 @@ TEST(MeshStability, ZeroAndNaNNormalsShadeAsAmbientNeverNaN) {
     const raster::Rgb ambient = raster::scaled_colour(kBase, 0.25F);
     for (const auto method : {raster::ShadingMethod::gouraud, raster::ShadingMethod::phong}) {
         raster::Scene scene{raster::OrthoCamera(60, 40), {0, 0, 0}, {{{1, 1, -1}}}, {}, {}};
-        scene.objects.push_back({mesh, glm::mat4(0.8F), raster::Material::shiny(kBase, 0.25F, 30.0F), method});
+        scene.objects.push_back({mesh, glm::mat4(0.8F), raster::IntensityMaterial::shiny(kBase, 0.25F, 30.0F), method});
         scene.objects.back().model[3][3] = 1.0F;
         Framebuffer image(60, 40);
         raster::DepthBuffer depth;
@@ -61,14 +61,14 @@ TEST(MeshStability, NonFiniteModelsDrawNothingAndUnusableLightsLeaveAmbient) {
         glm::mat4 model(0.5F);
         model[3][3] = 1.0F;
         model[1][2] = bad;
-        scene.objects.push_back({mesh, model, raster::Material::matte(kBase, 0.25F), raster::ShadingMethod::phong});
+        scene.objects.push_back({mesh, model, raster::IntensityMaterial::matte(kBase, 0.25F), raster::ShadingMethod::phong});
         Framebuffer image(60, 40);
         raster::DepthBuffer depth;
         EXPECT_EQ(raster::render(image, scene, depth), 0U) << bad;
         EXPECT_TRUE(colours_in(image, {9, 9, 9}).empty()) << bad;
     }
     raster::Scene dark{raster::OrthoCamera(60, 40), {0, 0, 0}, {{{kNaN, 1, -1}}, {{0, 0, 0}}, {{kInf, 0, 0}}}, {}, {}};
-    dark.objects.push_back({shared(raster::sphere(3)), glm::mat4(1.0F), raster::Material::shiny(kBase, 0.25F, 8.0F)});
+    dark.objects.push_back({shared(raster::sphere(3)), glm::mat4(1.0F), raster::IntensityMaterial::shiny(kBase, 0.25F, 8.0F)});
     Framebuffer image(60, 40);
     raster::DepthBuffer depth;
     raster::render(image, dark, depth);
@@ -97,7 +97,7 @@ TEST(MeshStability, SliversAndZeroAreaFacetsCoverTheDiscExactlyOnce) {
     disc.surface = raster::Surface::faceted;
     const raster::OrthoCamera camera(81, 81);  // 40 px per unit: the disc's radius is 36 px
     std::vector<int> hits(81 * 81, 0);
-    const raster::Lighting paint({{255, 255, 255}, 1.0F, 0.0F, {}}, {}, {0, 0, -1});
+    const raster::IntensityLighting paint({{255, 255, 255}, 1.0F, 0.0F, {}}, {}, {0, 0, -1});
     for (const raster::Facet& facet : disc.facets) {
         raster::Mesh one = disc;
         one.facets = {facet};

@@ -111,7 +111,7 @@ TEST(Coverage, DepthIsKeptForOneConvexMeshOnlyWhenAskedAndItsCoverageIsWhatWasDr
     raster::Scene scene{raster::OrthoCamera::look_at(24, 18, {2.0F, 1.5F, -3.0F}, {0.0F, 0.0F, 0.0F}, {0.0F, 1.0F, 0.0F}), {10, 20, 30},
                         {}, {}, {}};
     scene.objects.push_back({std::make_shared<const raster::Mesh>(raster::cube_mesh()), glm::mat4(1.0F),
-                             raster::Material::matte({200, 100, 50}, 1.0F)});
+                             raster::IntensityMaterial::matte({200, 100, 50}, 1.0F)});
     Framebuffer image(24, 18);
     raster::DepthBuffer depth;
     raster::render(image, scene, depth);

@@ -206,7 +206,7 @@ TEST(ShadedTriangle, AMeshThroughOneBatchEqualsABatchPerTriangle) {
         const raster::Mesh torus = raster::torus(12 * detail, 8 * detail);
         for (const glm::vec3 toward : {glm::vec3(1.0F, 0.3F, 0.2F), glm::vec3(-1.0F, -1.0F, 0.2F), glm::vec3(0.0F, 1.0F, 0.2F)}) {
             const std::vector<raster::DirectionalLight> sun{{toward, 1.0F}};
-            const raster::Lighting lighting({{200, 120, 40}, 0.2F, 0.8F, std::nullopt}, sun, {0, 0, -1});
+            const raster::IntensityLighting lighting({{200, 120, 40}, 0.2F, 0.8F, std::nullopt}, sun, {0, 0, -1});
             const raster::GouraudShader shader{&lighting};
             for (const float height : {0.5F, 1.0F, 2.0F, 4.0F}) {
                 for (const float side : {0.0F, 1.5F, -2.0F}) {

@@ -58,7 +58,7 @@ TEST(Threads, StripsTogetherDrawWhatOnePassOverTheWholeImageDraws) {
     constexpr int width = 90, height = 700;  // strips of 64 rows: eleven, the last short
     const raster::PerspectiveCamera camera =
         raster::PerspectiveCamera::look_at(width, height, {0.2F, 0.5F, -0.9F}, glm::vec3(0.0F), {0, 1, 0}, {70.0, 0.2, 10.0});
-    const raster::Material material{{200, 120, 40}, 0.2F, 0.8F, std::nullopt};
+    const raster::IntensityMaterial material{{200, 120, 40}, 0.2F, 0.8F, std::nullopt};
     const std::vector<raster::DirectionalLight> lights{{glm::normalize(glm::vec3(1, 1, -1)), 1.0F}};
     const raster::Mesh torus = raster::torus(48, 32);
     const glm::mat4 model = glm::rotate(glm::mat4(1.0F), 0.6F, glm::vec3(1, 0, 0));
@@ -69,7 +69,7 @@ TEST(Threads, StripsTogetherDrawWhatOnePassOverTheWholeImageDraws) {
     whole.clear(scene.background);
     raster::DepthBuffer whole_depth;
     whole_depth.prepare(width, height);
-    const raster::Lighting lighting(material, lights, -camera.direction());
+    const raster::IntensityLighting lighting(material, lights, -camera.direction());
     const raster::Mesh mesh = raster::posed(torus, model);
     raster::detail::draw_facets_in_perspective(whole, &whole_depth, camera, mesh, raster::FlatShader{&lighting});
     int drawn = 0;

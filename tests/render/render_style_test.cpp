@@ -15,7 +15,7 @@ raster::PerspectiveScene square_from(float eye_z) {
     raster::Mesh square = raster::textured_quad({glm::vec3(-1, -1, 0), glm::vec3(1, -1, 0), glm::vec3(1, 1, 0), glm::vec3(-1, 1, 0)}, glm::vec3(0, 0, 1));
     const auto camera = raster::PerspectiveCamera::look_at(9, 9, {0, 0, eye_z}, glm::vec3(0), {0, 1, 0}, {90.0, 0.1, 10.0});
     raster::SceneObject object{std::make_shared<const raster::Mesh>(std::move(square)), glm::mat4(1.0F),
-                               raster::PhongMaterial{{}, {1, 1, 1}, {}, std::nullopt}};
+                               raster::LinearMaterial{{}, {1, 1, 1}, {}, std::nullopt}};
     return {camera, raster::Rgb{0, 0, 0}, {}, {}, {object}};
 }
 
@@ -48,7 +48,7 @@ TEST(RenderStyle, AWireframeClipsEdgesThatPassBehindTheEye) {
     // they reach the bottom of the picture instead of wrapping round through infinity.
     raster::Mesh floor = raster::textured_quad({glm::vec3(-1, -1, -5), glm::vec3(1, -1, -5), glm::vec3(1, -1, 5), glm::vec3(-1, -1, 5)}, glm::vec3(0, -2, 0));
     const auto camera = raster::PerspectiveCamera::look_at(9, 9, {0, 0, 0}, {0, 0, 1}, {0, 1, 0}, {90.0, 0.1, 10.0});
-    raster::SceneObject object{std::make_shared<const raster::Mesh>(std::move(floor)), glm::mat4(1.0F), raster::Material{kWhite, 1.0F, 0.0F, std::nullopt}};
+    raster::SceneObject object{std::make_shared<const raster::Mesh>(std::move(floor)), glm::mat4(1.0F), raster::IntensityMaterial{kWhite, 1.0F, 0.0F, std::nullopt}};
     raster::Framebuffer image(9, 9);
     EXPECT_EQ(raster::draw_wireframe(image, raster::PerspectiveScene{camera, raster::Rgb{0, 0, 0}, {}, {}, {object}}), 2U);
     // The far edge at z = 5 is three pixels wide on row 5; the sides and the diagonal run down
@@ -78,7 +78,7 @@ TEST(RenderStyle, FlatStyleLightsEachSurfaceInItsTexturesMeanColourPerFacet) {
     ASSERT_EQ(flat.objects.size(), 1U);
     EXPECT_EQ(flat.objects[0].texture, nullptr);
     EXPECT_EQ(flat.objects[0].shading, raster::ShadingMethod::flat);
-    const auto& material = std::get<raster::PhongMaterial>(flat.objects[0].material);
+    const auto& material = std::get<raster::LinearMaterial>(flat.objects[0].material);
     // Red and blue averaged in linear light, to within the sRGB byte the 1 x 1 level is kept in.
     EXPECT_NEAR(material.diffuse.r, 0.5F, 0.005F);
     EXPECT_EQ(material.diffuse.g, 0.0F);

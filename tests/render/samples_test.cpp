@@ -26,7 +26,7 @@ raster::Scene white_rectangle(bool transparent = false) {
     const glm::vec3 behind(-0.5F, 0.0F, 1.0F);  // normals face the camera at z = -1
     mesh->facets = {raster::facet_facing_away(mesh->positions, 0, 1, 2, behind), raster::facet_facing_away(mesh->positions, 0, 2, 3, behind)};
     raster::Scene scene{raster::OrthoCamera(9, 9), {0, 0, 0}, {}, {}, {}};
-    scene.objects.push_back({mesh, glm::mat4(1.0F), raster::PhongMaterial{{0, 0, 0}, {1, 1, 1}, {0, 0, 0}, {}}, raster::ShadingMethod::unlit});
+    scene.objects.push_back({mesh, glm::mat4(1.0F), raster::LinearMaterial{{0, 0, 0}, {1, 1, 1}, {0, 0, 0}, {}}, raster::ShadingMethod::unlit});
     scene.keep_depth = transparent;
     return scene;
 }

@@ -18,7 +18,7 @@ std::shared_ptr<const raster::Mesh> shared(raster::Mesh mesh) { return std::make
 
 Scene one_object(std::shared_ptr<const raster::Mesh> mesh, const glm::mat4& model = glm::mat4(0.5F)) {
     Scene scene{raster::OrthoCamera(64, 48), {0, 0, 0}, {{{1, 1, -1}}}, {}, {}};
-    scene.objects.push_back({std::move(mesh), model, raster::Material::shiny({52, 110, 210}, 0.15F, 100.0F)});
+    scene.objects.push_back({std::move(mesh), model, raster::IntensityMaterial::shiny({52, 110, 210}, 0.15F, 100.0F)});
     scene.objects.back().model[3][3] = 1.0F;
     return scene;
 }
@@ -47,7 +47,7 @@ TEST(DepthRule, ALoneConvexMeshNeverTouchesTheDepthBuffer) {
         used.prepare(64, 48);
         tested.clear(scene.background);
         const raster::Mesh posed = raster::posed(*mesh, scene.objects[0].model);
-        const raster::Lighting lighting(std::get<raster::Material>(scene.objects[0].material), scene.lights, -scene.camera.direction());
+        const raster::IntensityLighting lighting(std::get<raster::IntensityMaterial>(scene.objects[0].material), scene.lights, -scene.camera.direction());
         raster::draw_mesh({tested, &used}, scene.camera, posed, raster::PhongShader{&lighting});
         EXPECT_EQ(differing_pixels(image, tested), 0);
     }
@@ -73,7 +73,7 @@ TEST(DepthRule, SeveralObjectsOrANonConvexMeshGetOneAndNeedIt) {
         Framebuffer untested(64, 48);
         untested.clear(scene.background);
         for (const raster::SceneObject& object : scene.objects) {
-            const raster::Lighting lighting(std::get<raster::Material>(object.material), scene.lights, -scene.camera.direction());
+            const raster::IntensityLighting lighting(std::get<raster::IntensityMaterial>(object.material), scene.lights, -scene.camera.direction());
             raster::draw_mesh({untested, nullptr}, scene.camera, raster::posed(*object.mesh, object.model), raster::PhongShader{&lighting});
         }
         EXPECT_GT(differing_pixels(image, untested), 0);
@@ -93,7 +93,7 @@ TEST(CubeMesh, TwelveFacetsDrawTheSixQuadsPixelForPixel) {
         for (std::size_t slot = 0; slot < 6; ++slot) {
             raster::Mesh face = posed;
             face.facets = {posed.facets[2 * slot], posed.facets[2 * slot + 1]};
-            const raster::Lighting unlit({raster::kCubeFacePalette[slot], 1.0F, 0.0F, {}}, {}, {0, 0, -1});
+            const raster::IntensityLighting unlit({raster::kCubeFacePalette[slot], 1.0F, 0.0F, {}}, {}, {0, 0, -1});
             raster::draw_mesh({facets, nullptr}, camera, face, raster::FlatShader{&unlit});
         }
         ASSERT_EQ(differing_pixels(quads, facets), 0) << "frame " << frame;
@@ -102,7 +102,7 @@ TEST(CubeMesh, TwelveFacetsDrawTheSixQuadsPixelForPixel) {
 
 TEST(DrawMesh, MalformedMeshesAndMismatchedBuffersAreClearErrors) {
     Framebuffer image(8, 8);
-    const raster::Lighting lighting(raster::Material::matte({255, 255, 255}, 0.5F), {}, {0, 0, -1});
+    const raster::IntensityLighting lighting(raster::IntensityMaterial::matte({255, 255, 255}, 0.5F), {}, {0, 0, -1});
     const raster::OrthoCamera camera(8, 8);
     raster::Mesh missing_vertex = raster::cube_mesh();
     missing_vertex.facets[3].corners[1] = 8;

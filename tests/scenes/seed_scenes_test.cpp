@@ -56,7 +56,7 @@ TEST(DepthDarkening, LightFallsLinearlyFromStartToTheFloorAtEnd) {
     EXPECT_EQ(dark.factor(30.0F), 0.2F);
     EXPECT_EQ(dark.factor(1e30F), 0.2F);
     // In a lighting model with an eye, the same surface point receives less light farther away.
-    const raster::PhongMaterial white{{}, {1, 1, 1}, {}, std::nullopt};
+    const raster::LinearMaterial white{{}, {1, 1, 1}, {}, std::nullopt};
     const raster::DirectionalLight sun{{0, 1, 0}, 1.0F};
     const raster::LinearLighting lit(white, std::span(&sun, 1), {}, {0, 0, -1}, glm::vec3(0, 0, 0), dark);
     EXPECT_FLOAT_EQ(lit.shade({0, 0, 5}, {0, 1, 0}).r, 1.0F);

@@ -62,7 +62,7 @@ TEST(Lanes, EveryLaneOfPhongEqualsItsPixelStageInBothViewsAndAnyShininess) {
     const Lights s;
     const std::vector<SurfacePoint> points = awkward_points(s.lamps);
     for (const std::optional<float> shininess : {std::optional<float>{}, std::optional<float>{30.0F}, std::optional<float>{7.5F}}) {
-        const PhongMaterial material = PhongMaterial::from_srgb({7, 37, 52}, {21, 98, 137}, {68, 68, 68}, shininess);
+        const LinearMaterial material = LinearMaterial::from_srgb({7, 37, 52}, {21, 98, 137}, {68, 68, 68}, shininess);
         const LinearLighting orthographic(material, s.suns, s.lamps, {0, 0, -1});
         const LinearLighting perspective(material, s.suns, s.lamps, {0, 0, -1}, glm::vec3(0.2F, 0.3F, -4.0F), DepthDarkening{3.0F, 6.0F, 0.2F});
         for (const LinearLighting* lighting : {&orthographic, &perspective}) {
@@ -81,7 +81,7 @@ TEST(Lanes, EveryLaneOfTexturedPhongEqualsItsPixelStage) {
         for (int x = 0; x < 8; ++x) image.set_pixel(x, y, {static_cast<std::uint8_t>(30 * x), static_cast<std::uint8_t>(30 * y), 200});
     }
     const Texture texture(image);
-    const PhongMaterial material = PhongMaterial::from_srgb({0, 0, 0}, {255, 255, 255}, {40, 40, 40}, 12.0F);
+    const LinearMaterial material = LinearMaterial::from_srgb({0, 0, 0}, {255, 255, 255}, {40, 40, 40}, 12.0F);
     const LinearLighting lighting(material, s.suns, s.lamps, {0, 0, -1}, glm::vec3(0.0F, 0.0F, -4.0F));
     const TexturedPhongShader shader{&lighting, {material.diffuse, &texture, {}}};
     using Varying = TexturedPhongShader::Varying;
@@ -137,7 +137,7 @@ TEST(Lanes, EveryLaneOfTheOtherTexturedShadersEqualsItsPixelStage) {
         for (int x = 0; x < 8; ++x) image.set_pixel(x, y, {static_cast<std::uint8_t>(32 * x), 90, static_cast<std::uint8_t>(32 * y)});
     }
     const Texture texture(image);
-    const PhongMaterial material = PhongMaterial::from_srgb({10, 20, 30}, {200, 180, 160}, {40, 40, 40}, 12.0F);
+    const LinearMaterial material = LinearMaterial::from_srgb({10, 20, 30}, {200, 180, 160}, {40, 40, 40}, 12.0F);
     const LinearLighting lighting(material, {}, {}, {0, 0, -1});
     const DiffuseSource source{material.diffuse, &texture, {}};
     std::mt19937 random(9);
@@ -164,7 +164,7 @@ TEST(Lanes, EveryLaneOfTheDiarysPhongEqualsItsPixelStage) {
     const std::vector<DirectionalLight> suns{{{1, 1, -1}, 0.7F}, {{-1, 0.2F, 0}, 0.3F}, {{0, 0, 0}, 1.0F}};
     const std::vector<SurfacePoint> points = awkward_points(Lights{}.lamps);
     for (const std::optional<float> shininess : {std::optional<float>{}, std::optional<float>{30.0F}, std::optional<float>{2.5F}}) {
-        const Lighting lighting({{52, 110, 210}, 0.2F, 0.8F, shininess}, suns, {0, 0, -1});
+        const IntensityLighting lighting({{52, 110, 210}, 0.2F, 0.8F, shininess}, suns, {0, 0, -1});
         const PhongShader shader{&lighting};
         expect_lanes_match(
             points, [&](const SurfacePoint& p) { return shader.pixel(p.normal); },
@@ -186,9 +186,9 @@ TEST(Lanes, EveryLaneOfFlatAndGouraudEqualsItsPixelStageInBothPhases) {
     std::uniform_real_distribution<float> any(-0.2F, 1.2F);
     for (int i = 0; i < 300; ++i) values.push_back(any(random));
     const std::vector<DirectionalLight> sun{{{0, 0, -1}, 1.0F}};
-    const Lighting lighting({{37, 110, 255}, 0.2F, 0.8F, std::nullopt}, sun, {0, 0, -1});
+    const IntensityLighting lighting({{37, 110, 255}, 0.2F, 0.8F, std::nullopt}, sun, {0, 0, -1});
     const GouraudShader gouraud{&lighting};
-    const LinearLighting linear_lighting(PhongMaterial::from_srgb({7, 37, 52}, {21, 98, 137}, {68, 68, 68}, std::nullopt), {}, {}, {0, 0, -1});
+    const LinearLighting linear_lighting(LinearMaterial::from_srgb({7, 37, 52}, {21, 98, 137}, {68, 68, 68}, std::nullopt), {}, {}, {0, 0, -1});
     const LinearGouraudShader linear{&linear_lighting};
     for (std::size_t first = 0; first < values.size(); first += kLanes) {
         const std::size_t n = std::min<std::size_t>(kLanes, values.size() - first);

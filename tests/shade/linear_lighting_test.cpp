@@ -10,7 +10,7 @@ using raster::DirectionalLight;
 using raster::Falloff;
 using raster::LinearLighting;
 using raster::LinearRgb;
-using raster::PhongMaterial;
+using raster::LinearMaterial;
 using raster::PointLight;
 
 namespace {
@@ -22,7 +22,7 @@ const float kNaN = std::numeric_limits<float>::quiet_NaN();
 const float kInf = std::numeric_limits<float>::infinity();
 
 // Diffuse white only, so the red channel reads the summed diffuse factor.
-PhongMaterial white_diffuse() { return {{0, 0, 0}, {1, 1, 1}, {0, 0, 0}, std::nullopt}; }
+LinearMaterial white_diffuse() { return {{0, 0, 0}, {1, 1, 1}, {0, 0, 0}, std::nullopt}; }
 
 float diffuse_at(glm::vec3 position, glm::vec3 normal, std::vector<DirectionalLight> directional,
                  std::vector<PointLight> points = {}) {
@@ -54,7 +54,7 @@ TEST(LinearLighting, PointLightsDependOnTheSurfacePosition) {
     EXPECT_NEAR(diffuse_at({0, 0, 0}, kUp, {}, lamp), 1.0F, 1e-6F);              // straight below
     EXPECT_NEAR(diffuse_at({1, 0, 0}, kUp, {}, lamp), 1.0F / std::sqrt(2.0F), 1e-6F);  // off to the side
     // The highlight follows the half vector between the light and the eye at each point.
-    const PhongMaterial shiny{{0, 0, 0}, {0, 0, 0}, {1, 1, 1}, 30.0F};
+    const LinearMaterial shiny{{0, 0, 0}, {0, 0, 0}, {1, 1, 1}, 30.0F};
     const LinearLighting lighting(shiny, {}, lamp, kUp);
     EXPECT_NEAR(lighting.shade({0, 0, 0}, kUp).r, 1.0F, 1e-6F);
     EXPECT_LT(lighting.shade({1, 0, 0}, kUp).r, 0.2F);
@@ -69,14 +69,14 @@ TEST(LinearLighting, FalloffAtKnownDistances) {
     const Falloff linear{0.0F, 2.0F, 0.0F};
     EXPECT_NEAR(diffuse_at(kOrigin, kUp, {}, {{{0, 4, 0}, 1.0F, linear}}), 1.0F / 8.0F, 1e-6F);
     // Falloff scales the highlight as well as the diffuse light.
-    const PhongMaterial both{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 8.0F};
+    const LinearMaterial both{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 8.0F};
     const LinearRgb c = LinearLighting(both, {}, std::vector<PointLight>{{{0, 2, 0}, 1.0F, diary}}, kUp).shade(kOrigin, kUp);
     EXPECT_NEAR(c.r, 0.2F, 1e-6F);
     EXPECT_NEAR(c.g, 0.2F, 1e-6F);
 }
 
 TEST(LinearLighting, EmissiveOnlyMaterialsIgnoreLight) {
-    const PhongMaterial gold = PhongMaterial::from_srgb({255, 215, 0}, {0, 0, 0}, {0, 0, 0}, std::nullopt);
+    const LinearMaterial gold = LinearMaterial::from_srgb({255, 215, 0}, {0, 0, 0}, {0, 0, 0}, std::nullopt);
     const std::vector<DirectionalLight> sun{{kUp, 5.0F}};
     const std::vector<PointLight> lamp{{{0, 1, 0}, 9.0F, Falloff{}}};
     for (const glm::vec3 normal : {kUp, -kUp, glm::vec3(0.0F)}) {
@@ -87,7 +87,7 @@ TEST(LinearLighting, EmissiveOnlyMaterialsIgnoreLight) {
 }
 
 TEST(LinearLighting, IntensityScalesDiffuseAndSpecularButNotEmissive) {
-    const PhongMaterial m = PhongMaterial::from_srgb({7, 37, 52}, {21, 98, 137}, {68, 68, 68}, 30.0F);
+    const LinearMaterial m = LinearMaterial::from_srgb({7, 37, 52}, {21, 98, 137}, {68, 68, 68}, 30.0F);
     const glm::vec3 normal = glm::normalize(glm::vec3(1, 2, -1));
     for (const bool point : {false, true}) {
         const auto lit = [&](float intensity) {
@@ -139,11 +139,11 @@ TEST(LinearLighting, OddLightsGiveDefinedResultsNeverNaN) {
     EXPECT_NEAR(diffuse_at({0, -3e38F, 0}, kUp, {}, {{{0, 3e38F, 0}, 1.0F, {1.0F, 0.0F, 0.0F}}}), 1.0F, 1e-6F);
     EXPECT_EQ(diffuse_at({0, -3e38F, 0}, kUp, {}, {{{0, 3e38F, 0}, 1.0F, {1.0F, 1.0F, 0.0F}}}), 0.0F);
     // A zero normal is "no normal": emissive only, whatever shines.
-    const PhongMaterial glowing{{0.1F, 0.2F, 0.3F}, {1, 1, 1}, {1, 1, 1}, 0.0F};
+    const LinearMaterial glowing{{0.1F, 0.2F, 0.3F}, {1, 1, 1}, {1, 1, 1}, 0.0F};
     EXPECT_EQ(LinearLighting(glowing, std::vector<DirectionalLight>{{kUp, 1.0F}}, {}, kToEye).shade(kOrigin, glm::vec3(0.0F)),
               glowing.emissive);
     // An infinite shininess, where a dot of unit vectors rounding above 1 would give infinity.
-    const PhongMaterial mirror{{0, 0, 0}, {0, 0, 0}, {1, 1, 1}, kInf};
+    const LinearMaterial mirror{{0, 0, 0}, {0, 0, 0}, {1, 1, 1}, kInf};
     for (int i = 0; i < 1000; ++i) {
         const auto t = static_cast<float>(i);
         const glm::vec3 n = glm::normalize(glm::vec3(std::sin(t * 0.37F), std::cos(t * 0.71F), std::sin(t * 1.3F) - 1.5F));
@@ -154,7 +154,7 @@ TEST(LinearLighting, OddLightsGiveDefinedResultsNeverNaN) {
     // Every combination above with a shininess, several lights at once: finite.
     const std::vector<PointLight> all{{kOrigin, 1e30F, inverse_square}, {{0, 1e-30F, 0}, 3e38F, inverse_square},
                                       {{0, 3e38F, 0}, -3e38F, none}, {{0, 1, 0}, 1.0F, inverse_square}};
-    const PhongMaterial shiny{{0, 0, 0}, {1, 1, 1}, {1, 1, 1}, 0.5F};
+    const LinearMaterial shiny{{0, 0, 0}, {1, 1, 1}, {1, 1, 1}, 0.5F};
     for (const glm::vec3 normal : {kUp, -kUp, glm::vec3(1, 0, 0)}) {
         EXPECT_TRUE(finite(LinearLighting(shiny, std::vector<DirectionalLight>{{kUp, 3e38F}}, all, kToEye).shade(kOrigin, normal)));
     }

@@ -25,7 +25,7 @@ Framebuffer red_to_blue(raster::ShadingMethod method, LinearRgb diffuse = {1, 1,
         raster::ground_quad({-1.0F, 0.0F, -1.0F}, {1.0F, 0.0F, -1.0F}, {1.0F, 0.0F, 1.0F}, {-1.0F, 0.0F, 1.0F}));
     for (const glm::vec3& p : square->positions) square->colours.push_back(p.x < 0.0F ? LinearRgb{1, 0, 0} : LinearRgb{0, 0, 1});
     const glm::mat4 facing_camera = glm::rotate(glm::mat4(1.0F), -std::numbers::pi_v<float> / 2, {1.0F, 0.0F, 0.0F});
-    scene.objects.push_back({square, facing_camera, raster::PhongMaterial{{0, 0, 0}, diffuse, {0, 0, 0}, {}}, method});
+    scene.objects.push_back({square, facing_camera, raster::LinearMaterial{{0, 0, 0}, diffuse, {0, 0, 0}, {}}, method});
     Framebuffer image(9, 9);
     raster::DepthBuffer depth;
     raster::render(image, scene, depth);
@@ -77,7 +77,7 @@ TEST(VertexColours, AMeshWhoseColoursDoNotMatchItsPositionsIsRefused) {
     auto square = std::make_shared<raster::Mesh>(
         raster::ground_quad({-1.0F, 0.0F, -1.0F}, {1.0F, 0.0F, -1.0F}, {1.0F, 0.0F, 1.0F}, {-1.0F, 0.0F, 1.0F}));
     square->colours.assign(3, LinearRgb{1, 0, 0});
-    scene.objects.push_back({square, glm::mat4(1.0F), raster::PhongMaterial{}, raster::ShadingMethod::unlit});
+    scene.objects.push_back({square, glm::mat4(1.0F), raster::LinearMaterial{}, raster::ShadingMethod::unlit});
     Framebuffer image(9, 9);
     raster::DepthBuffer depth;
     EXPECT_THROW(raster::render(image, scene, depth), std::invalid_argument);

@@ -36,7 +36,7 @@ struct Mesh {
     // (doc/conventions.md#depth).
     bool convex = false;
     std::vector<glm::vec2> uvs{};  // empty, or one per position (doc/conventions.md#textures)
-    // Empty, or one per position, multiplying a Phase 2 material's diffuse colour
+    // Empty, or one per position, multiplying a linear material's diffuse colour
     // (doc/conventions.md#vertex-colours).
     std::vector<LinearRgb> colours{};
 };

@@ -17,7 +17,7 @@ namespace raster {
 struct ModelPart {
     std::string material_name;  // empty for the default material
     Mesh mesh;
-    PhongMaterial material;
+    LinearMaterial material;
     std::shared_ptr<const Texture> texture{};  // the diffuse map, when it loaded
     Sampler sampler{};
 };
@@ -31,7 +31,7 @@ struct Model {
 };
 
 // The material of a model file without one: a light grey, no highlight (Blender's default diffuse).
-[[nodiscard]] PhongMaterial default_model_material() noexcept;
+[[nodiscard]] LinearMaterial default_model_material() noexcept;
 
 [[nodiscard]] std::size_t triangle_count(const Model& model) noexcept;
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include <raster/shade/lighting.hpp>
+#include <raster/shade/intensity_lighting.hpp>
 #include <raster/shade/linear_lighting.hpp>
 #include <raster/geometry/mesh.hpp>
 #include <raster/camera/ortho_camera.hpp>
@@ -42,10 +42,10 @@ struct DetailChoice {
 // Gouraud and Phong (cheapest per pixel first) whose shading meets it, refining the mesh until
 // one does. Shading error is estimated on the posed mesh against the shape's true normals.
 [[nodiscard]] DetailChoice choose_detail(ShapeKind shape, const glm::mat4& model, const OrthoCamera& camera,
-                                         const Material& material, std::span<const DirectionalLight> lights);
-// The same for a Phase 2 material, its error measured after the sRGB encoding.
+                                         const IntensityMaterial& material, std::span<const DirectionalLight> lights);
+// The same for a linear material, its error measured after the sRGB encoding.
 [[nodiscard]] DetailChoice choose_detail(ShapeKind shape, const glm::mat4& model, const OrthoCamera& camera,
-                                         const PhongMaterial& material, std::span<const DirectionalLight> lights,
+                                         const LinearMaterial& material, std::span<const DirectionalLight> lights,
                                          std::span<const PointLight> points);
 
 // One choice per object of a scene, made to hold over every sampled frame (the finest level and
@@ -64,7 +64,7 @@ struct DetailPlan {
 // where the view line through that point first meets the true surface. Points within 1.5 px of
 // an outline, or whose line first meets another sheet of the surface, are left to the outline.
 [[nodiscard]] double shading_error_levels(ShapeKind shape, const Mesh& posed_mesh, const glm::mat4& model,
-                                          const OrthoCamera& camera, ShadingMethod method, const Lighting& lighting);
+                                          const OrthoCamera& camera, ShadingMethod method, const IntensityLighting& lighting);
 [[nodiscard]] double shading_error_levels(ShapeKind shape, const Mesh& posed_mesh, const glm::mat4& model,
                                           const OrthoCamera& camera, ShadingMethod method, const LinearLighting& lighting);
 

@@ -2,7 +2,7 @@
 
 #include <raster/rasterize/depth_buffer.hpp>
 #include <raster/image/framebuffer.hpp>
-#include <raster/shade/lighting.hpp>
+#include <raster/shade/intensity_lighting.hpp>
 #include <raster/shade/linear_lighting.hpp>
 #include <raster/geometry/mesh.hpp>
 #include <raster/camera/ortho_camera.hpp>
@@ -24,9 +24,9 @@ namespace raster {
 // all, its diffuse colour (or texture) as it is.
 enum class ShadingMethod { flat, gouraud, phong, unlit };
 
-// How a surface takes light: the diary's Phase 1 intensity on 8-bit colour, or Phase 2's
-// material colours in linear light (doc/conventions.md#light).
-using SurfaceMaterial = std::variant<Material, PhongMaterial>;
+// How a surface takes light: an intensity on 8-bit colour, or material colours in linear light
+// (doc/conventions.md#light).
+using SurfaceMaterial = std::variant<IntensityMaterial, LinearMaterial>;
 
 // A mesh placed in the world with its surface; one without a mesh draws nothing.
 struct SceneObject {
@@ -36,8 +36,8 @@ struct SceneObject {
     ShadingMethod shading = ShadingMethod::phong;
     // The true surface the mesh approximates, if any, so its detail can be chosen (auto_detail.hpp).
     std::optional<ShapeKind> shape{};
-    // A diffuse texture over the mesh's texture coordinates, multiplying a Phase 2 material's
-    // diffuse colour; Phase 1 materials ignore it.
+    // A diffuse texture over the mesh's texture coordinates, multiplying a linear material's
+    // diffuse colour; intensity materials ignore it.
     std::shared_ptr<const Texture> texture{};
     Sampler sampler{};
 };
@@ -48,10 +48,10 @@ struct BasicScene {
     Camera camera;
     Rgb background{0, 0, 0};
     std::vector<DirectionalLight> lights;
-    // Point lights light Phase 2 materials only; the Phase 1 model knew directional light alone.
+    // Point lights light linear materials only; the intensity model knows directional light alone.
     std::vector<PointLight> point_lights;
     std::vector<SceneObject> objects;
-    // Light dimmed with view depth (Phase 2 materials in perspective only), as raster-engine does.
+    // Light dimmed with view depth (linear materials in perspective only), as raster-engine does.
     std::optional<DepthDarkening> darkening{};
     // Depth kept even where the scene needs none, so that the caller can read what was drawn for
     // a transparent background: Renderer::coverage (or, at one sample, DepthBuffer::coverage).

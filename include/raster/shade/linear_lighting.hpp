@@ -3,7 +3,7 @@
 #include <raster/image/colour.hpp>
 #include <raster/image/framebuffer.hpp>
 #include <raster/image/lanes.hpp>
-#include <raster/shade/lighting.hpp>
+#include <raster/shade/intensity_lighting.hpp>
 #include <raster/geometry/mesh.hpp>
 
 #include <algorithm>
@@ -15,8 +15,8 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
-// The diary's Phase 2 light (its 0.1.0 to 0.1.9): explicit material colours, directional and
-// point lights summed in linear light (doc/conventions.md#light-in-linear-colour).
+// Light in linear colour: explicit material colours, directional and point lights summed in
+// linear light (doc/conventions.md#light-in-linear-colour).
 namespace raster {
 
 // A point light's attenuation with distance d: 1 / (constant + linear d + quadratic d^2).
@@ -35,14 +35,14 @@ struct PointLight {
 
 // Phong colours in linear light, as three.js's MeshPhongMaterial has them: emissive light added
 // once, diffuse and specular light per light; no shininess means no highlight.
-struct PhongMaterial {
+struct LinearMaterial {
     LinearRgb emissive;
     LinearRgb diffuse;
     LinearRgb specular;
     std::optional<float> shininess;
 
     // The colours given as sRGB bytes (#RRGGBB), decoded to linear light.
-    [[nodiscard]] static PhongMaterial from_srgb(Rgb emissive, Rgb diffuse, Rgb specular, std::optional<float> shininess);
+    [[nodiscard]] static LinearMaterial from_srgb(Rgb emissive, Rgb diffuse, Rgb specular, std::optional<float> shininess);
 };
 
 // raster-engine's Doom-like darkening: light received falls off linearly with view depth, from
@@ -86,12 +86,12 @@ public:
     // `to_eye` is the unit vector toward the viewer of an orthographic view, one for the whole
     // image; with an `eye_position` (a perspective view) it is taken toward the eye at each point.
     // With an eye position, `darkening` dims the light a point receives by its view depth.
-    LinearLighting(const PhongMaterial& material, std::span<const DirectionalLight> directional,
+    LinearLighting(const LinearMaterial& material, std::span<const DirectionalLight> directional,
                    std::span<const PointLight> points, glm::vec3 to_eye,
                    std::optional<glm::vec3> eye_position = std::nullopt,
                    std::optional<DepthDarkening> darkening = std::nullopt);
 
-    [[nodiscard]] const PhongMaterial& material() const noexcept { return material_; }
+    [[nodiscard]] const LinearMaterial& material() const noexcept { return material_; }
 
     // The colour leaving a surface point with unit normal `normal` toward the viewer (a zero
     // normal stands for "no normal": emissive only). Never NaN; may exceed 1 before the write
@@ -175,7 +175,7 @@ private:
     }
     [[nodiscard]] static Toward toward_point_precisely(glm::vec3 light, glm::vec3 surface) noexcept;
 
-    PhongMaterial material_;
+    LinearMaterial material_;
     std::vector<PreparedLight> directional_;
     std::vector<PreparedPointLight> points_;
     glm::vec3 to_eye_;

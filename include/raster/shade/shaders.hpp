@@ -2,7 +2,7 @@
 
 #include <raster/image/colour.hpp>
 #include <raster/image/lanes.hpp>
-#include <raster/shade/lighting.hpp>
+#include <raster/shade/intensity_lighting.hpp>
 #include <raster/shade/linear_lighting.hpp>
 #include <raster/geometry/mesh.hpp>
 #include <raster/rasterize/shader.hpp>
@@ -20,7 +20,7 @@ template <bool FacetNormal>
 struct IntensityShader {
     using Varying = float;
     static constexpr bool kFacetNormal = FacetNormal;
-    const Lighting* lighting;
+    const IntensityLighting* lighting;
 
     [[nodiscard]] Varying vertex(const Corner& corner) const noexcept { return lighting->intensity(corner.normal); }
     [[nodiscard]] Rgb pixel(Varying intensity) const noexcept { return scaled_colour(lighting->material.base, intensity); }
@@ -32,16 +32,16 @@ struct IntensityShader {
     }
 };
 
-// One intensity per facet from its normal: 0.0.8 to 0.0.11.
+// One intensity per facet from its normal.
 using FlatShader = IntensityShader<true>;
-// Intensity at the corners, interpolated across the facet: 0.0.12 and 0.0.13.
+// Intensity at the corners, interpolated across the facet.
 using GouraudShader = IntensityShader<false>;
 
-// Normals interpolated and renormalised, lit at every pixel: 0.0.15 onward.
+// Normals interpolated and renormalised, lit at every pixel.
 struct PhongShader {
     using Varying = glm::vec3;
     static constexpr bool kFacetNormal = false;
-    const Lighting* lighting;
+    const IntensityLighting* lighting;
 
     [[nodiscard]] Varying vertex(const Corner& corner) const noexcept { return corner.normal; }
     [[nodiscard]] Rgb pixel(const Varying& normal) const noexcept {
@@ -57,7 +57,7 @@ struct PhongShader {
     }
 };
 
-// The same three in linear light (Phase 2): colours summed in linear light and encoded to sRGB
+// The same three in linear light: colours summed in linear light and encoded to sRGB
 // at the pixel write.
 template <bool FacetNormal>
 struct LinearColourShader {
@@ -76,11 +76,10 @@ struct LinearColourShader {
 };
 
 using LinearFlatShader = LinearColourShader<true>;
-// Lights the corners and interpolates their colours: the original's 0.1.7 GouraudShader.
+// Lights the corners and interpolates their colours.
 using LinearGouraudShader = LinearColourShader<false>;
 
-// World position and normal interpolated, lit at every pixel: the original's 0.1.7 PhongShader,
-// whose point lights need the position.
+// World position and normal interpolated, lit at every pixel: point lights need the position.
 struct LinearPhongShader {
     using Varying = SurfacePoint;
     static constexpr bool kFacetNormal = false;

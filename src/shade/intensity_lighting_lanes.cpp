@@ -1,12 +1,12 @@
-#include <raster/shade/lighting.hpp>
+#include <raster/shade/intensity_lighting.hpp>
 
 #include "shade/simd_lanes.hpp"
 
-// Lighting::intensity in lanes: the scalar steps in their order, so each lane is exact.
+// IntensityLighting::intensity in lanes: the scalar steps in their order, so each lane is exact.
 namespace raster {
 
 // Flattened, like LinearLighting::shade_lanes: the eight-lane helpers cost more called than inlined.
-[[gnu::flatten]] void Lighting::intensity_lanes(const LaneVec3& normals, LaneFloats& out, int count) const noexcept {
+[[gnu::flatten]] void IntensityLighting::intensity_lanes(const LaneVec3& normals, LaneFloats& out, int count) const noexcept {
     using lanes::Floats;
     namespace stdx = lanes::stdx;
     const lanes::Vec3 normal = lanes::unit_or_zero(lanes::load(normals));

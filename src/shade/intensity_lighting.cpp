@@ -1,4 +1,4 @@
-#include <raster/shade/lighting.hpp>
+#include <raster/shade/intensity_lighting.hpp>
 
 #include <raster/geometry/mesh.hpp>
 
@@ -21,7 +21,7 @@ PreparedLight prepare_light(const DirectionalLight& light, glm::vec3 to_eye) noe
     return {toward, unit_or_zero(toward + to_eye), light.intensity};
 }
 
-Lighting::Lighting(const Material& surface, std::span<const DirectionalLight> sources, glm::vec3 to_eye)
+IntensityLighting::IntensityLighting(const IntensityMaterial& surface, std::span<const DirectionalLight> sources, glm::vec3 to_eye)
     : material(surface), specular_(surface.shininess) {
     if (material.shininess && !(*material.shininess >= 0.0F)) material.shininess = 0.0F;  // pow(0, -s) is infinite
     for (const DirectionalLight& light : sources) lights.push_back(prepare_light(light, to_eye));

@@ -20,20 +20,20 @@ struct DirectionalLight {
     float intensity = 1.0F;
 };
 
-// The diary's Phase 1 surface: a base colour scaled by one intensity,
+// A surface in 8-bit intensity: a base colour scaled by one intensity,
 // I = ambient + diffuse * sum over lights of intensity * (max(0, n.l) + max(0, n.h)^shininess),
 // the specular term only when a shininess is given; a negative or NaN shininess counts as 0
 // (doc/conventions.md#light).
-struct Material {
+struct IntensityMaterial {
     Rgb base;
     float ambient = 0.0F;
     float diffuse = 1.0F;
     std::optional<float> shininess;
 
-    // Lambert plus ambient, the diffuse share being what the ambient leaves: 0.0.8.
-    [[nodiscard]] static Material matte(Rgb base, float ambient) { return {base, ambient, 1.0F - ambient, {}}; }
-    // Blinn-Phong on top: 0.0.13.
-    [[nodiscard]] static Material shiny(Rgb base, float ambient, float shininess) {
+    // Lambert plus ambient, the diffuse share being what the ambient leaves.
+    [[nodiscard]] static IntensityMaterial matte(Rgb base, float ambient) { return {base, ambient, 1.0F - ambient, {}}; }
+    // Blinn-Phong on top.
+    [[nodiscard]] static IntensityMaterial shiny(Rgb base, float ambient, float shininess) {
         return {base, ambient, 1.0F - ambient, shininess};
     }
 };
@@ -75,12 +75,12 @@ struct PreparedLight {
 [[nodiscard]] PreparedLight prepare_light(const DirectionalLight& light, glm::vec3 to_eye) noexcept;
 
 // Everything the shaders need that is the same for every pixel of a mesh.
-struct Lighting {
-    Material material;
+struct IntensityLighting {
+    IntensityMaterial material;
     std::vector<PreparedLight> lights;
 
     // `to_eye` is the unit vector toward the viewer; orthographic, so one for the whole image.
-    Lighting(const Material& material, std::span<const DirectionalLight> lights, glm::vec3 to_eye);
+    IntensityLighting(const IntensityMaterial& material, std::span<const DirectionalLight> lights, glm::vec3 to_eye);
 
     // The intensity for a unit normal (zero stands for "no normal": ambient only). Inline
     // because it runs at every pixel of a Phong surface.
