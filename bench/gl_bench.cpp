@@ -1,3 +1,4 @@
+// One bench program, both sides of a case in one CSV line; stays whole so the sides read together.
 // raster-vs-gl: the same scenes through raster and through Mesa's software OpenGL (OSMesa, whose
 // driver on Debian 12 is llvmpipe), one side per run so that tools/bench-gl.sh can interleave
 // the runs and set LP_NUM_THREADS for each. Prints one CSV line:

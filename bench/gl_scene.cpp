@@ -1,3 +1,4 @@
+// The GLSL program and the GL state feeding it are one contract; stays whole to read them together.
 #include "gl_scene.hpp"
 
 #include <algorithm>

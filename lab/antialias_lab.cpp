@@ -1,3 +1,4 @@
+// One lab program feeding one set of tables; stays whole so that it reads top to bottom.
 // antialias-lab: how far each anti-aliasing method's coverage is from the exact area of every
 // pixel, and what it costs per frame. The product's --samples 1..16 draws white triangles on
 // black (unlit, so a pixel's linear value is its coverage estimate), by multisampling and by

@@ -1,3 +1,4 @@
+// One lab program, three measures written into one summary; stays whole so it reads top to bottom.
 // perspective-lab: the choices of the perspective pipeline measured against exact answers.
 //  1. Interpolation: affine (linear on screen) against through 1/w, on a floor seen at grazing
 //     angles, as the error of texture coordinates in texels against the ray-cast truth, and time.

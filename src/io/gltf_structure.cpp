@@ -1,4 +1,4 @@
-// The only file that includes nlohmann/json: glTF's JSON read for its sizes and indices.
+// The only file that includes nlohmann/json (glTF's sizes and indices); stays whole for that.
 #include "io/gltf_structure.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// Every format's reader shares the bounds-checked reads at the top; stays whole so none escapes.
 // Reads image headers without any decoder: every read is bounds-checked and every walk advances
 // through the data, so hostile files cost at most one pass over their bytes.
 #include "io/image_header.hpp"

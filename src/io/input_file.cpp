@@ -1,3 +1,4 @@
+// The bodies of input_file.hpp; stays whole as the one file named after that public header.
 #include <raster/io/input_file.hpp>
 
 #include "io/open_beneath.hpp"

@@ -1,4 +1,4 @@
-// The only file that includes tinyobjloader.
+// The only file that includes tinyobjloader; stays whole so that the library stays in one room.
 #include <raster/io/obj_file.hpp>
 
 #include "io/input_stream.hpp"

@@ -1,3 +1,4 @@
+// The diary's scenes: one table and the poses it names; stays whole so each reads by its entry.
 #include <raster/scenes/diary_scenes.hpp>
 
 #include <raster/scenes/scenes.hpp>

@@ -1,3 +1,4 @@
+// One island: views, flight path and parts; stays whole so each placement reads beside the rest.
 #include <raster/scenes/island_world.hpp>
 
 #include <raster/geometry/primitives.hpp>

@@ -1,3 +1,4 @@
+// Viewport, clipping and 1/w share one scene set-up; stays whole so that they read together.
 // The perspective camera, clipping in homogeneous space and interpolation through 1/w.
 #include "rasterize/setup_perspective.hpp"
 

@@ -1,3 +1,4 @@
+// One property over a table of outlines; stays whole so that the shapes read side by side.
 #include "geometry/polygon_triangles.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// One list of hostile inputs; stays whole so that every refusal the apps owe reads side by side.
 // The apps against inputs nobody should give them: outputs named like inputs, devices, FIFOs,
 // huge files, non-finite numbers, files outside a confined directory. Each gets one line.
 #include <raster/io/webp.hpp>

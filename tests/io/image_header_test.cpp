@@ -1,3 +1,4 @@
+// One table of encoded samples; stays whole so that every format's cases read side by side.
 #include "io/image_header.hpp"
 
 #include "support/encoded_images.hpp"

@@ -1,3 +1,4 @@
+// One table of OBJ inputs, read and refused; stays whole so that the cases read side by side.
 // Reading OBJ models: geometry, normals, materials, textures, and every kind of bad input.
 #include <raster/io/model.hpp>
 #include <raster/io/obj_file.hpp>

@@ -1,3 +1,4 @@
+// One table of golden pictures; stays whole so that every pinned output is listed in one place.
 #include <raster/render/samples.hpp>
 #include <raster/scenes/diary_scenes.hpp>
 #include <raster/scenes/scenes.hpp>

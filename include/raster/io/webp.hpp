@@ -15,7 +15,7 @@
 
 // Lossless WebP: stills, animations, and reading either back. Files are written by
 // write_output_file (atomic, links and devices refused); every failure throws
-// std::runtime_error with a one-line reason.
+// std::runtime_error with a one-line reason. Bodies in src/io/webp/, one file per concept.
 namespace raster {
 
 // How hard the encoder works for a smaller file; doc/performance.md has the measured trade-off.

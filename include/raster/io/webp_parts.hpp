@@ -7,8 +7,8 @@
 #include <vector>
 
 // Animations rendered in parts, a range of frames each (on several machines, or restartably),
-// and joined back without re-encoding a pixel. Bodies in webp_parts.cpp, which walks each file's
-// chunks once, so that time is linear in frames.
+// and joined back without re-encoding a pixel. Bodies in src/io/webp/parts.cpp, which walks each
+// file's chunks once, so that time is linear in frames.
 namespace raster {
 
 // Frames first..last, both included, of a clip of `total` frames numbered from 0.

@@ -1,10 +1,10 @@
 // Parts of an animation: marked with their frame range, and joined without decoding a pixel.
-// Frames are walked chunk by chunk (webp_chunks.hpp), so joining is linear in frames.
+// Frames are walked chunk by chunk (chunks.hpp), so joining is linear in frames.
 #include <raster/io/input_file.hpp>
 #include <raster/io/webp.hpp>
 #include <raster/io/webp_parts.hpp>
 
-#include "io/webp_chunks.hpp"
+#include "io/webp/chunks.hpp"
 
 #include <algorithm>
 #include <limits>

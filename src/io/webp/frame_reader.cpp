@@ -2,7 +2,7 @@
 // does (anim_decode.c), which holds the canvas three times over.
 #include <raster/io/webp.hpp>
 
-#include "io/webp_chunks.hpp"
+#include "io/webp/chunks.hpp"
 
 #include <algorithm>
 #include <limits>

@@ -1,4 +1,4 @@
-#include "io/webp_chunks.hpp"
+#include "io/webp/chunks.hpp"
 
 #include <algorithm>
 #include <stdexcept>

@@ -1,0 +1,98 @@
+// glTF 2.0, STL and PLY read by the Open Asset Import Library, one reader per format, every file
+// through BoundedFiles; src/io/assimp/ is the only folder that includes assimp.
+#include <raster/io/model_file.hpp>
+
+#include "io/assimp/bounded_files.hpp"
+#include "io/assimp/scene_model.hpp"
+
+#include <raster/io/input_file.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <memory>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+#include <assimp/BaseImporter.h>
+#include <assimp/Importer.hpp>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+namespace raster {
+
+namespace {
+
+using detail::BoundedFiles;
+
+// Leaves `importer` only the reader of one format: when it declines a file, assimp would
+// otherwise offer it to every reader it has (3DS, FBX, Collada, ...). Returns those taken out,
+// which the caller now owns.
+std::vector<std::unique_ptr<Assimp::BaseImporter>> keep_only_reader(Assimp::Importer& importer, const std::string& extension) {
+    const std::string wanted = extension == ".glb" ? "glb" : extension.substr(1);
+    std::vector<Assimp::BaseImporter*> others;
+    for (std::size_t i = 0; i < importer.GetImporterCount(); ++i) {
+        const aiImporterDesc* about = importer.GetImporterInfo(i);
+        const std::string name = about != nullptr && about->mName != nullptr ? about->mName : "";
+        const std::string endings = about != nullptr && about->mFileExtensions != nullptr ? " " + std::string(about->mFileExtensions) + " " : "";
+        const bool gltf2 = name.find("glTF2") != std::string::npos;
+        const bool keep = endings.find(" " + wanted + " ") != std::string::npos && (wanted.starts_with("gl") ? gltf2 : true);
+        if (!keep) others.push_back(importer.GetImporter(i));
+    }
+    std::vector<std::unique_ptr<Assimp::BaseImporter>> removed;
+    for (Assimp::BaseImporter* other : others) {
+        if (importer.UnregisterLoader(other) == AI_SUCCESS) removed.emplace_back(other);
+    }
+    return removed;
+}
+
+bool readable(const aiScene* scene) { return scene != nullptr && (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) == 0; }
+
+constexpr const char* kUnreadable = "not a glTF 2.0, STL or PLY model raster can read (or one it finds broken)";
+
+}  // namespace
+
+Model read_scene_file(const std::filesystem::path& path, const ObjOptions& options) {
+    const std::string name = printable(path.string());
+    Model model;
+    std::string extension = path.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    std::vector<std::unique_ptr<Assimp::BaseImporter>> removed;  // outlives the importer that gave them up
+    Assimp::Importer importer;
+    removed = keep_only_reader(importer, extension);
+    auto* files = new BoundedFiles(options, model.sources, path, extension);  // the importer owns it
+    importer.SetIOHandler(files);
+    if (FileIdentity identity; !identity_of(path, identity)) {
+        // assimp would stop at its own existence check, giving no reason: InputFile gives one.
+        if (Assimp::IOStream* stream = files->Open(path.c_str(), "rb")) files->Close(stream);
+        throw std::runtime_error(name + ": " + (files->first_reason().empty() ? kUnreadable : files->first_reason()));
+    }
+    // Our own checks follow; assimp's validation refuses indices out of range and broken arrays.
+    const aiScene* scene = importer.ReadFile(path.string(), aiProcess_ValidateDataStructure);
+    if (!readable(scene)) {
+        const std::string& why = files->first_failure();
+        if (why.starts_with("'" + name + "' ")) throw std::runtime_error(name + ": " + files->first_reason());  // the model itself
+        throw std::runtime_error(name + ": " + (why.empty() ? kUnreadable : why));
+    }
+    detail::model_from_scene(*scene, path, name, detail::colour_space_of(extension), options, model);
+    return model;
+}
+
+Model parse_scene_file(std::span<const std::uint8_t> bytes, const std::string& format, const ObjOptions& options) {
+    const std::string name = "<memory>";
+    Model model;
+    ObjOptions no_files = options;
+    no_files.load_textures = false;
+    no_files.confine = "/nonexistent-raster-memory-only";  // a buffer or image the text names is never opened
+    std::vector<std::unique_ptr<Assimp::BaseImporter>> removed;
+    Assimp::Importer importer;
+    removed = keep_only_reader(importer, "." + format);
+    importer.SetIOHandler(new BoundedFiles(no_files, model.sources));
+    if (std::string problem = detail::structure_problem(bytes, "." + format, "", no_files); !problem.empty()) throw std::runtime_error(name + ": " + problem);
+    const aiScene* scene = importer.ReadFileFromMemory(bytes.data(), bytes.size(), aiProcess_ValidateDataStructure, format.c_str());
+    if (!readable(scene)) throw std::runtime_error(name + ": " + kUnreadable);
+    detail::model_from_scene(*scene, "", name, detail::colour_space_of(format), no_files, model);
+    return model;
+}
+
+}  // namespace raster

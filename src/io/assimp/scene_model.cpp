@@ -1,0 +1,226 @@
+#include "io/assimp/scene_model.hpp"
+
+#include "io/model_builder.hpp"
+#include "io/named_path.hpp"
+#include "io/gltf_structure.hpp"
+#include "geometry/polygon_triangles.hpp"
+
+#include <raster/image/colour.hpp>
+#include <raster/io/input_file.hpp>
+#include <raster/io/texture_file.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <unordered_set>
+#include <utility>
+#include <vector>
+#include <assimp/material.h>
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/matrix.hpp>
+
+namespace raster::detail {
+namespace {
+
+glm::dmat4 matrix_of(const aiMatrix4x4& m) {
+    // assimp's matrices are row-major with translation in the last column; GLM's are column-major.
+    return glm::transpose(glm::dmat4(m.a1, m.a2, m.a3, m.a4, m.b1, m.b2, m.b3, m.b4, m.c1, m.c2, m.c3, m.c4, m.d1, m.d2, m.d3, m.d4));
+}
+
+bool finite(const aiVector3D& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// A glTF metallic-roughness material as raster's Phong (doc/conventions.md#models): the base
+// colour is diffuse as far as the surface is not metal; the highlight is 4 % white for a
+// dielectric and the base colour for a metal, as sharp as the roughness allows.
+LinearMaterial material_from(const aiMaterial& m) {
+    aiColor4D base(0.8F, 0.8F, 0.8F, 1.0F);
+    if (m.Get(AI_MATKEY_BASE_COLOR, base) != AI_SUCCESS) m.Get(AI_MATKEY_COLOR_DIFFUSE, base);
+    float metallic = 0.0F, roughness = 1.0F;
+    const bool pbr = m.Get(AI_MATKEY_METALLIC_FACTOR, metallic) == AI_SUCCESS;
+    if (pbr) m.Get(AI_MATKEY_ROUGHNESS_FACTOR, roughness);
+    const auto usable = [](float v, float fallback) { return std::isfinite(v) ? std::clamp(v, 0.0F, 1.0F) : fallback; };
+    metallic = usable(metallic, 0.0F);
+    roughness = usable(roughness, 1.0F);
+    const LinearRgb colour{std::max(0.0F, usable(base.r, 0.8F)), std::max(0.0F, usable(base.g, 0.8F)), std::max(0.0F, usable(base.b, 0.8F))};
+    LinearMaterial material{LinearRgb{}, colour * (1.0F - metallic), LinearRgb{}, std::nullopt};
+    const float alpha = roughness * roughness;
+    if (pbr && alpha < 0.95F) {
+        const float f0 = 0.04F * (1.0F - metallic);
+        material.specular = LinearRgb{f0, f0, f0} + colour * metallic;
+        material.shininess = std::min(2.0F / std::max(alpha * alpha, 1e-4F) - 2.0F, 2048.0F);
+    }
+    return material;
+}
+
+// A file's colour channel in linear light: clamped to [0, 1], white where it is not a number.
+float linear_channel(float written, ColourSpace space) {
+    const float c = std::isfinite(written) ? std::clamp(written, 0.0F, 1.0F) : 1.0F;
+    return space == ColourSpace::srgb ? static_cast<float>(linear_from_srgb_channel(c)) : c;
+}
+
+class SceneReader {
+public:
+    SceneReader(const aiScene& scene, const std::filesystem::path& path, ColourSpace colours, const ObjOptions& options, Model& model)
+        : scene_(scene), path_(path), name_(printable(path.string())), colours_(colours), options_(options), model_(model) {}
+
+    PolygonSoup soup() {
+        if (scene_.mRootNode == nullptr) throw std::runtime_error("it holds no scene");
+        visit(*scene_.mRootNode, glm::dmat4(1.0), 0);
+        return std::move(soup_);
+    }
+
+    // Each material's colour and diffuse map; a map that cannot be read is a warning.
+    std::vector<std::pair<LinearMaterial, std::shared_ptr<const Texture>>> materials() {
+        std::vector<std::pair<LinearMaterial, std::shared_ptr<const Texture>>> out;
+        for (unsigned i = 0; i < scene_.mNumMaterials; ++i) {
+            const aiMaterial& m = *scene_.mMaterials[i];
+            out.emplace_back(material_from(m), options_.load_textures ? map_of(m) : nullptr);
+        }
+        return out;
+    }
+
+private:
+    void visit(const aiNode& node, const glm::dmat4& parent, int depth) {
+        if (depth > kMaxGltfNodeDepth) throw std::runtime_error("its nodes nest more than " + std::to_string(kMaxGltfNodeDepth) + " deep (or loop)");
+        if (!on_path_.insert(&node).second) throw std::runtime_error("its node hierarchy loops");
+        const glm::dmat4 world = parent * matrix_of(node.mTransformation);
+        for (unsigned i = 0; i < node.mNumMeshes; ++i) {
+            if (node.mMeshes[i] >= scene_.mNumMeshes) throw std::runtime_error("a node names mesh " + std::to_string(node.mMeshes[i]) + ", which it lacks");
+            add_mesh(*scene_.mMeshes[node.mMeshes[i]], world);
+        }
+        for (unsigned i = 0; i < node.mNumChildren; ++i) {
+            if (node.mChildren[i] != nullptr) visit(*node.mChildren[i], world, depth + 1);
+        }
+        on_path_.erase(&node);
+    }
+
+    // Positions and normals moved by the node's matrix, then mirrored into raster's left-handed
+    // world as OBJ's are; faces split into their own outline and re-wound to match.
+    void add_mesh(const aiMesh& mesh, const glm::dmat4& world) {
+        const auto first = static_cast<std::int64_t>(soup_.positions.size());
+        const bool has_normals = mesh.mNormals != nullptr, has_uvs = mesh.mTextureCoords[0] != nullptr;
+        const bool has_colours = mesh.mColors[0] != nullptr;
+        // Normals, texture coordinates and colours are kept one per position: meshes without them pad.
+        if (has_normals) soup_.normals.resize(soup_.positions.size(), glm::vec3(0.0F));
+        if (has_uvs) soup_.uvs.resize(soup_.positions.size(), glm::vec2(0.0F));
+        if (has_colours) soup_.colours.resize(soup_.positions.size(), LinearRgb{1.0F, 1.0F, 1.0F});
+        const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(glm::dmat3(world)));
+        for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+            const aiVector3D& p = mesh.mVertices[v];
+            if (!finite(p)) throw std::runtime_error("mesh '" + printable(mesh.mName.C_Str(), 80) + "' has a vertex that is not a finite point");
+            const glm::dvec3 placed = glm::dvec3(world * glm::dvec4(p.x, p.y, p.z, 1.0));
+            soup_.positions.emplace_back(placed.x, placed.y, -placed.z);
+            if (mesh.mNormals != nullptr) {
+                const aiVector3D& n = mesh.mNormals[v];
+                const glm::dvec3 turned = finite(n) ? normal_matrix * glm::dvec3(n.x, n.y, n.z) : glm::dvec3(0.0);
+                soup_.normals.emplace_back(turned.x, turned.y, -turned.z);
+            }
+            if (mesh.mTextureCoords[0] != nullptr) {
+                const aiVector3D& uv = mesh.mTextureCoords[0][v];
+                soup_.uvs.emplace_back(std::isfinite(uv.x) ? uv.x : 0.0F, std::isfinite(uv.y) ? uv.y : 0.0F);
+            }
+            if (has_colours) {  // alpha is not drawn: surfaces are opaque
+                const aiColor4D& c = mesh.mColors[0][v];
+                soup_.colours.push_back({linear_channel(c.r, colours_), linear_channel(c.g, colours_), linear_channel(c.b, colours_)});
+            }
+        }
+        std::vector<glm::dvec3> outline;
+        std::vector<SoupCorner> corners;
+        for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+            const aiFace& face = mesh.mFaces[f];
+            if (face.mNumIndices < 3) continue;  // points and lines draw nothing
+            if (face.mNumIndices > kMaxFaceCorners) throw std::runtime_error("a face of more than " + std::to_string(kMaxFaceCorners) + " corners");
+            outline.clear();
+            corners.clear();
+            for (unsigned k = 0; k < face.mNumIndices; ++k) {
+                const unsigned index = face.mIndices[k];
+                if (index >= mesh.mNumVertices) {
+                    throw std::runtime_error("a face names vertex " + std::to_string(index) + " of a mesh of " + std::to_string(mesh.mNumVertices));
+                }
+                const std::int64_t at = first + index;
+                corners.push_back({at, has_normals ? at : kNoIndex, has_uvs ? at : kNoIndex, has_colours ? at : kNoIndex});
+                outline.emplace_back(soup_.positions[static_cast<std::size_t>(at)]);
+            }
+            for (const auto& [a, b, c] : triangles_of_polygon(outline)) {
+                soup_.triangles.push_back({{corners[a], corners[c], corners[b]}, static_cast<int>(mesh.mMaterialIndex)});
+            }
+        }
+        if (!soup_.normals.empty()) soup_.normals.resize(soup_.positions.size(), glm::vec3(0.0F));
+        if (!soup_.uvs.empty()) soup_.uvs.resize(soup_.positions.size(), glm::vec2(0.0F));
+        if (!soup_.colours.empty()) soup_.colours.resize(soup_.positions.size(), LinearRgb{1.0F, 1.0F, 1.0F});
+    }
+
+    std::shared_ptr<const Texture> map_of(const aiMaterial& m) {
+        aiString written;
+        if (m.GetTexture(aiTextureType_BASE_COLOR, 0, &written) != AI_SUCCESS && m.GetTexture(aiTextureType_DIFFUSE, 0, &written) != AI_SUCCESS) {
+            return nullptr;
+        }
+        const std::string text = written.C_Str();
+        const auto known = loaded_.find(text);
+        if (known != loaded_.end()) return known->second;
+        std::shared_ptr<const Texture> texture;
+        try {
+            if (const aiTexture* embedded = scene_.GetEmbeddedTexture(written.C_Str())) {
+                if (embedded->mHeight != 0) throw std::runtime_error("an embedded image of raw texels, which raster does not read");
+                const auto* bytes = reinterpret_cast<const std::uint8_t*>(embedded->pcData);
+                texture = std::make_shared<const Texture>(decode_texture({bytes, embedded->mWidth}, options_.max_texels));
+            } else {
+                const std::filesystem::path file = resolve_named_path(path_.parent_path(), text, options_.confine);
+                if (FileIdentity identity; identity_of(file, identity)) model_.sources.push_back({file, identity, "texture"});
+                texture = std::make_shared<const Texture>(read_texture(file, options_.max_texels, options_.confine, &model_.sources));
+            }
+        } catch (const std::runtime_error& problem) {
+            model_.warnings.push_back(name_ + ": texture '" + printable(text, 80) + "': " + problem.what() + "; drawing its material's colour");
+        }
+        loaded_.emplace(text, texture);
+        return texture;
+    }
+
+    const aiScene& scene_;
+    std::filesystem::path path_;
+    std::string name_;
+    ColourSpace colours_;
+    const ObjOptions& options_;
+    Model& model_;
+    PolygonSoup soup_;
+    std::unordered_set<const aiNode*> on_path_;
+    std::map<std::string, std::shared_ptr<const Texture>> loaded_;
+};
+
+}  // namespace
+
+ColourSpace colour_space_of(std::string format) {
+    std::transform(format.begin(), format.end(), format.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (format.starts_with(".")) format.erase(0, 1);
+    return format == "ply" || format == "stl" ? ColourSpace::srgb : ColourSpace::linear;
+}
+
+void model_from_scene(const aiScene& scene, const std::filesystem::path& path, const std::string& name, ColourSpace colours,
+                      const ObjOptions& options, Model& model) {
+    try {
+        SceneReader reader(scene, path, colours, options, model);
+        PolygonSoup soup = reader.soup();
+        const auto materials = reader.materials();
+        for (auto& [id, mesh] : meshes_by_material(soup, options.crease_degrees)) {
+            ModelPart part{"", std::move(mesh), default_model_material()};
+            if (id >= 0 && static_cast<std::size_t>(id) < materials.size()) {
+                const aiString material_name = scene.mMaterials[id]->GetName();
+                part.material_name = material_name.C_Str();
+                part.material = materials[static_cast<std::size_t>(id)].first;
+                if (!part.mesh.uvs.empty()) part.texture = materials[static_cast<std::size_t>(id)].second;
+            }
+            model.parts.push_back(std::move(part));
+        }
+    } catch (const std::runtime_error& problem) {
+        throw std::runtime_error(name + ": " + problem.what());
+    }
+    if (model.parts.empty()) throw std::runtime_error(name + ": no faces to draw");
+}
+
+}  // namespace raster::detail

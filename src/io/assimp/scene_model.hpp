@@ -1,0 +1,26 @@
+#pragma once
+
+#include <raster/io/model.hpp>
+#include <raster/io/obj_file.hpp>
+
+#include <filesystem>
+#include <string>
+#include <assimp/scene.h>
+
+// The Model of a scene assimp read: every node's meshes placed, faces split and re-wound,
+// glTF's metallic-roughness materials as Phong, their maps loaded.
+namespace raster::detail {
+
+// How a format writes vertex colours: glTF's COLOR_0 is linear; PLY and STL colours are the
+// bytes a screen shows, sRGB (doc/conventions.md#vertex-colours).
+enum class ColourSpace { linear, srgb };
+
+// The colour space of a format named by its ending, with or without the dot, in any letter case.
+[[nodiscard]] ColourSpace colour_space_of(std::string format);
+
+// Appends the scene's parts to `model`; `path` places the files it names and `name` is for
+// messages. Throws std::runtime_error naming `name` for a scene it cannot use.
+void model_from_scene(const aiScene& scene, const std::filesystem::path& path, const std::string& name, ColourSpace colours,
+                      const ObjOptions& options, Model& model);
+
+}  // namespace raster::detail
