@@ -1,4 +1,7 @@
-#include "exporter.hpp"
+#include "animation_export.hpp"
+#include "command_line.hpp"
+#include "option_checks.hpp"
+#include "shared_options.hpp"
 
 int main(int argc, char** argv) {
     CLI::App app("Renders one full tumble of the cube, M(t) = Rz(t) Ry(t) Rx(t) S(0.5), to a "

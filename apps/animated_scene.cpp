@@ -1,5 +1,10 @@
-#include "exporter.hpp"
+#include "animation_export.hpp"
+#include "command_line.hpp"
+#include "option_checks.hpp"
 #include "scene_option.hpp"
+#include "shared_options.hpp"
+
+#include <raster/render/samples.hpp>
 
 int main(int argc, char** argv) {
     CLI::App app("Renders the animation of one diary scene (0.0.8 to 0.1.7; by default the original's final "

@@ -1,11 +1,14 @@
-// --skip-existing: which outputs count as finished.
-#include "exporter.hpp"
+#include "finished_picture.hpp"
 
 #include <raster/io/input_file.hpp>
 #include <raster/io/png.hpp>
+#include <raster/io/webp.hpp>
 
+#include <algorithm>
+#include <cstdint>
 #include <exception>
-#include <filesystem>
+#include <span>
+#include <vector>
 
 bool is_nonempty_regular_file(const std::filesystem::path& path) {
     // A link, a directory or an empty file named like the picture is not one a run wrote.

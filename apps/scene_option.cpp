@@ -1,6 +1,6 @@
 #include "scene_option.hpp"
 
-#include "exporter.hpp"
+#include "option_checks.hpp"
 
 #include <stdexcept>
 #include <vector>

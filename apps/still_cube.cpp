@@ -1,4 +1,6 @@
-#include "exporter.hpp"
+#include "command_line.hpp"
+#include "shared_options.hpp"
+#include "still_export.hpp"
 
 int main(int argc, char** argv) {
     CLI::App app("Renders the cube in its still pose (pi/4 about Y, then X, half size) to a "

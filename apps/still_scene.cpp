@@ -1,5 +1,9 @@
-#include "exporter.hpp"
+#include "command_line.hpp"
 #include "scene_option.hpp"
+#include "shared_options.hpp"
+#include "still_export.hpp"
+
+#include <raster/render/samples.hpp>
 
 #include <stdexcept>
 

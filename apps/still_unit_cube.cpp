@@ -1,4 +1,6 @@
-#include "exporter.hpp"
+#include "command_line.hpp"
+#include "shared_options.hpp"
+#include "still_export.hpp"
 
 int main(int argc, char** argv) {
     CLI::App app("Renders the unit cube at the identity pose to a lossless WebP still: only the "

@@ -1,4 +1,7 @@
-#include "exporter.hpp"
+#include "command_line.hpp"
+#include "delivery.hpp"
+#include "export_options.hpp"
+#include "help_format.hpp"
 
 #include <raster/io/input_file.hpp>
 #include <raster/io/webp_parts.hpp>
@@ -39,7 +42,7 @@ int main(int argc, char** argv) {
         check_output(app, options);
         const std::vector<std::uint8_t> bytes = raster::assemble_parts(std::move(parts));
         deliver(options, bytes);
-        return "Wrote " + (options.output == "-" ? std::string("standard output") : raster::printable(options.output)) + ": " + std::to_string(raster::webp_frame_count(bytes)) + " frames from " +
+        return describe_destination(options) + ": " + std::to_string(raster::webp_frame_count(bytes)) + " frames from " +
                std::to_string(names.size()) + (names.size() == 1 ? " part, " : " parts, ") + std::to_string(bytes.size()) + " bytes";
     });
 }

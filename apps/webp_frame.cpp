@@ -1,4 +1,8 @@
-#include "exporter.hpp"
+#include "command_line.hpp"
+#include "delivery.hpp"
+#include "help_format.hpp"
+#include "option_checks.hpp"
+#include "shared_options.hpp"
 
 #include <raster/io/png.hpp>
 
@@ -46,7 +50,7 @@ int main(int argc, char** argv) {
         const std::vector<std::uint8_t> bytes = options.image_format() == ImageFormat::png ? raster::encode_png(found->image, alpha)
                                                                                           : raster::encode_webp_still(found->image, options.effort, alpha);
         deliver(options, bytes);
-        return "Wrote " + (options.output == "-" ? std::string("standard output") : raster::printable(options.output)) + ": frame " +
+        return describe_destination(options) + ": frame " +
                std::to_string(index) + " of " + raster::printable(input) + ", " + std::to_string(info.width) + "x" +
                std::to_string(info.height) + ", " + std::to_string(bytes.size()) + " bytes";
     });

@@ -1,10 +1,12 @@
-#include "exporter.hpp"
+#include "command_line.hpp"
+#include "export_options.hpp"
+#include "help_format.hpp"
 
+#include <raster/io/frame_files.hpp>
 #include <raster/io/png.hpp>
 
 #include <algorithm>
 #include <cerrno>
-#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
@@ -15,12 +17,8 @@
 
 namespace {
 
-// DIR/0000.png, DIR/0001.png, ...: printf's %04d, the name ffmpeg's -i DIR/%04d.png reads.
-std::filesystem::path numbered(const std::filesystem::path& dir, int index) {
-    char name[32];
-    std::snprintf(name, sizeof name, "%04d.png", index);
-    return dir / name;
-}
+// DIR/0000.png, DIR/0001.png, ...: the names ffmpeg's -i DIR/%04d.png reads.
+std::filesystem::path numbered(const std::filesystem::path& dir, int index) { return dir / raster::frame_file_name(index); }
 
 // A hidden directory inside DIR that holds the frames until all are written, removed with
 // whatever is left in it when the run ends, so that a failure leaves neither a partial set nor it.
@@ -55,6 +53,30 @@ bool move_to_free_name(const std::filesystem::path& from, const std::filesystem:
     return true;
 }
 
+// Frames of another animation left here would mix with ours in a video tool's %04d.png.
+void refuse_old_frames(const std::string& dir, int frame_count) {
+    std::error_code error;
+    for (int index = 0; index < frame_count; ++index) {
+        if (std::filesystem::symlink_status(numbered(dir, index), error).type() != std::filesystem::file_type::not_found) {
+            throw std::runtime_error("'" + raster::printable(dir) + "' already holds frames (" + numbered(dir, index).filename().string() +
+                                     "); choose an empty directory");
+        }
+    }
+}
+
+// Moves the `count` frames written to `staging` into DIR, each to a name still free; on a
+// failure the frames already moved are removed again.
+void move_into_place(const std::filesystem::path& staging, const std::string& dir, int count) {
+    std::error_code error;
+    for (int index = 0; index < count; ++index) {
+        if (!move_to_free_name(numbered(staging, index), numbered(dir, index))) {
+            const std::string why = std::strerror(errno);
+            for (int moved = 0; moved < index; ++moved) std::filesystem::remove(numbered(dir, moved), error);
+            throw std::runtime_error("cannot move " + numbered(dir, index).filename().string() + " into '" + raster::printable(dir) + "': " + why);
+        }
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -84,13 +106,7 @@ int main(int argc, char** argv) {
         }
         raster::WebpFrameReader reader(input, &options.inputs);
         const raster::WebpInfo& info = reader.info();
-        // Frames of another animation left here would mix with ours in a video tool's %04d.png.
-        for (int index = 0; index < info.frame_count; ++index) {
-            if (std::filesystem::symlink_status(numbered(dir, index), error).type() != std::filesystem::file_type::not_found) {
-                throw std::runtime_error("'" + raster::printable(dir) + "' already holds frames (" + numbered(dir, index).filename().string() +
-                                         "); choose an empty directory");
-            }
-        }
+        refuse_old_frames(dir, info.frame_count);
         const StagingDir staging(dir);
         int count = 0, shortest = 0, longest = 0;
         std::uintmax_t bytes = 0;
@@ -104,13 +120,7 @@ int main(int argc, char** argv) {
             longest = std::max(longest, frame->duration_ms);
             ++count;
         }
-        for (int index = 0; index < count; ++index) {
-            if (!move_to_free_name(numbered(staging.path(), index), numbered(dir, index))) {
-                const std::string why = std::strerror(errno);
-                for (int moved = 0; moved < index; ++moved) std::filesystem::remove(numbered(dir, moved), error);
-                throw std::runtime_error("cannot move " + numbered(dir, index).filename().string() + " into '" + raster::printable(dir) + "': " + why);
-            }
-        }
+        move_into_place(staging.path(), dir, count);
         const std::string timing = shortest == longest ? std::to_string(shortest) + " ms each"
                                                        : "lasting " + std::to_string(shortest) + " to " + std::to_string(longest) + " ms";
         return "Wrote " + raster::printable(numbered(dir, 0).string()) + " to " + numbered(dir, count - 1).filename().string() + ": " +

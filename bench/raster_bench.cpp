@@ -5,7 +5,10 @@
 #include <raster/scenes/diary_scenes.hpp>
 #include <raster/scenes/seed_scenes.hpp>
 #include <raster/geometry/shapes.hpp>
-#include "exporter.hpp"
+#include <raster/platform/cores.hpp>
+#include "command_line.hpp"
+#include "help_format.hpp"
+#include "option_checks.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -18,7 +21,6 @@
 #include <string>
 #include <utility>
 #include <sys/utsname.h>
-#include <thread>
 #include <unistd.h>
 #include <vector>
 
@@ -111,7 +113,7 @@ std::string machine() {
     }
     utsname system{};
     ::uname(&system);
-    return model + ", " + std::to_string(std::max(1U, std::thread::hardware_concurrency())) + " logical cores, " +
+    return model + ", " + std::to_string(raster::available_cores()) + " logical cores, " +
            system.sysname + " " + system.release + ", compiled by " + __VERSION__;
 }
 

@@ -4,6 +4,8 @@
 #include "measures.hpp"
 #include "speed.hpp"
 
+#include <raster/platform/cores.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -12,7 +14,6 @@
 #include <iomanip>
 #include <iostream>
 #include <sstream>
-#include <thread>
 #include <vector>
 
 namespace {
@@ -203,7 +204,7 @@ int main(int argc, char** argv) {
     const std::vector<Row> lines = measure_lines(out, speeds);
 
     std::ofstream summary(out / "summary.md");
-    summary << "# Lab results\n\nWritten by `raster-lab` on " << machine() << " (" << std::thread::hardware_concurrency()
+    summary << "# Lab results\n\nWritten by `raster-lab` on " << machine() << " (" << raster::available_cores()
             << " cores). Speeds are medians of repeated Google Benchmark runs; the speed that decides the "
                "Pareto front is measured on the product's own scene, the front faces (fills) or culled edges "
                "(lines) of all 360 tumbling-cube frames at 800x600. Every figure comes from the CSV tables "

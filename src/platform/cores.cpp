@@ -1,8 +1,7 @@
 #include <raster/platform/cores.hpp>
 
-#include <sched.h>
-
 #include <algorithm>
+#include <sched.h>
 #include <thread>
 
 namespace raster {
@@ -10,8 +9,9 @@ namespace raster {
 int available_cores() noexcept {
     cpu_set_t allowed;
     CPU_ZERO(&allowed);
-    if (::sched_getaffinity(0, sizeof allowed, &allowed) == 0) return std::max(1, CPU_COUNT(&allowed));
-    return static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
+    const int cores = ::sched_getaffinity(0, sizeof allowed, &allowed) == 0 ? CPU_COUNT(&allowed)
+                                                                            : static_cast<int>(std::thread::hardware_concurrency());
+    return std::max(cores, 1);
 }
 
 }  // namespace raster

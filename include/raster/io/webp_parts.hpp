@@ -1,5 +1,7 @@
 #pragma once
 
+#include <raster/io/frame_range.hpp>
+
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -10,16 +12,6 @@
 // and joined back without re-encoding a pixel. Bodies in src/io/webp/parts.cpp, which walks each
 // file's chunks once, so that time is linear in frames.
 namespace raster {
-
-// Frames first..last, both included, of a clip of `total` frames numbered from 0.
-struct FrameRange {
-    int first = 0;
-    int last = 0;
-    int total = 0;
-    int spacing_ms = 0;  // how long each frame shows: a one-frame part is stored as a still, which has no duration
-    [[nodiscard]] int count() const noexcept { return last - first + 1; }
-    friend bool operator==(const FrameRange&, const FrameRange&) = default;
-};
 
 // The animation marked as frames `range` of a longer clip, in a chunk players ignore ("RNGE").
 // Throws std::runtime_error for bytes that are not a WebP animation.

@@ -1,10 +1,12 @@
 #pragma once
 
-// The machine's cores as this process may use them.
+// How many threads are worth running at once. Wherever the library or its programs take a
+// thread count (RenderOptions::threads, AnimationSettings::threads, --threads), 0 means
+// available_cores(). Body in cores.cpp.
 namespace raster {
 
-// The cores this process may run on (its affinity mask), at least 1; a thread count of 0
-// anywhere in raster means this many.
+// The cores this process may run on: its CPU affinity (so taskset, cgroups and containers are
+// heeded), else std::thread::hardware_concurrency(); at least 1.
 [[nodiscard]] int available_cores() noexcept;
 
 }  // namespace raster

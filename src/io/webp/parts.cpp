@@ -1,5 +1,6 @@
 // Parts of an animation: marked with their frame range, and joined without decoding a pixel.
 // Frames are walked chunk by chunk (chunks.hpp), so joining is linear in frames.
+#include <raster/io/frame_timing.hpp>
 #include <raster/io/input_file.hpp>
 #include <raster/io/webp.hpp>
 #include <raster/io/webp_parts.hpp>
@@ -147,7 +148,7 @@ std::vector<std::uint8_t> assemble_parts(std::vector<AnimationPart> parts) {
         }
         // libwebp's own encoder merges a repeated frame into the one before, lengthening it, so
         // a part is checked by how long its frames last, not by how many it stores.
-        const std::int64_t expected_ms = std::int64_t{piece.range.count()} * spacing;
+        const std::int64_t expected_ms = frames_length_ms(piece.range.count(), spacing);
         std::int64_t lasts_ms = 0;
         std::vector<detail::AnimationFrame> frames;
         for (const WebpChunk& chunk : piece.chunks) {

@@ -1,0 +1,67 @@
+#include "model_render.hpp"
+
+#include "animation_export.hpp"
+
+#include <raster/io/model_file.hpp>
+#include <raster/io/texture_file.hpp>
+
+#include <cstdio>
+#include <iostream>
+#include <numbers>
+#include <utility>
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::string seconds_text(double seconds) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2f s", seconds);
+    return text;
+}
+
+LoadedModel load_model(const std::string& path, const RenderPlan& plan) {
+    const auto start = std::chrono::steady_clock::now();
+    raster::Model model = raster::read_model(path, plan.obj);
+    LoadedModel loaded;
+    loaded.inputs = model.sources;
+    loaded.inputs.insert(loaded.inputs.end(), plan.texture_inputs.begin(), plan.texture_inputs.end());
+    loaded.warnings = model.warnings;
+    if (plan.texture) {
+        for (std::string& warning : raster::replace_diffuse_maps(model, plan.texture, plan.texture_path)) loaded.warnings.push_back(warning);
+    }
+    for (raster::ModelPart& part : model.parts) part.sampler.filter = plan.filter;
+    loaded.triangles = raster::triangle_count(model);
+    loaded.model = std::make_shared<const raster::Model>(std::move(model));
+    loaded.seconds = seconds_since(start);
+    return loaded;
+}
+
+std::function<FinishedPicture()> render_model(const CLI::App& app, ExportOptions options, const LoadedModel& loaded,
+                                              const RenderPlan& plan, raster::Renderer& renderer) {
+    const auto start = std::chrono::steady_clock::now();
+    options.inputs = loaded.inputs;
+    if (!options.quiet) {
+        for (const std::string& warning : loaded.warnings) std::cerr << app.get_name() << ": warning: " << warning << '\n';
+    }
+    const raster::ModelStage stage(loaded.model, plan.view, options.width, options.height);
+    const auto draw = [&](raster::Framebuffer& frame, double turn, std::vector<std::uint8_t>& alpha) {
+        stage.render(frame, renderer, turn);
+        if (plan.view.transparent) alpha = renderer.coverage();
+    };
+    const std::string tail = ", " + std::to_string(loaded.triangles) + " triangles, ";
+    const double loading = loaded.seconds;
+    if (plan.frames == 0) {
+        auto finish = render_still(app, options, [&](raster::Framebuffer& frame, std::vector<std::uint8_t>& alpha) { draw(frame, 0.0, alpha); });
+        return [finish = std::move(finish), tail, loading, start] {
+            FinishedPicture done = finish();
+            done.report += tail + seconds_text(loading + seconds_since(start));
+            return done;
+        };
+    }
+    std::string report = export_animation(app, options, plan.frames, plan.fps, [&](raster::Framebuffer& frame, int index, std::vector<std::uint8_t>& alpha) {
+        draw(frame, 2.0 * std::numbers::pi * index / plan.frames, alpha);
+    });
+    report += tail + seconds_text(loading + seconds_since(start));
+    return [report] { return FinishedPicture{{}, report, true}; };
+}

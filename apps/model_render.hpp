@@ -1,0 +1,50 @@
+#pragma once
+
+#include "export_options.hpp"
+#include "still_export.hpp"
+
+#include <raster/io/obj_file.hpp>
+#include <raster/render/model_scene.hpp>
+#include <raster/shade/texture.hpp>
+
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+// render's models: each read with what its reading found, then drawn as a still or a turntable.
+
+// A model read and made ready to draw, with what its reading found.
+struct LoadedModel {
+    std::shared_ptr<const raster::Model> model;
+    std::vector<raster::InputRecord> inputs;  // every file read for it, which no output may replace
+    std::vector<std::string> warnings;
+    std::size_t triangles = 0;
+    double seconds = 0.0;  // reading it took
+    std::string refusal;  // why a batch will not draw it, though it was read
+};
+
+// What every model of a run shares: how to read it and how to look at it.
+struct RenderPlan {
+    raster::ObjOptions obj;
+    std::shared_ptr<const raster::Texture> texture;  // --texture, read once
+    std::string texture_path;
+    std::vector<raster::InputRecord> texture_inputs;
+    raster::TextureFilter filter = raster::TextureFilter::trilinear;
+    raster::ModelView view;
+    int frames = 0;  // 0: a still
+    int fps = 30;
+};
+
+LoadedModel load_model(const std::string& path, const RenderPlan& plan);
+
+// Draws one loaded model and returns the step that finishes it: a still's encoding, which may
+// overlap the next model's drawing (an animation is written at once).
+std::function<FinishedPicture()> render_model(const CLI::App& app, ExportOptions options, const LoadedModel& loaded,
+                                              const RenderPlan& plan, raster::Renderer& renderer);
+
+double seconds_since(std::chrono::steady_clock::time_point start);
+// "1.25 s", for the report lines.
+std::string seconds_text(double seconds);
