@@ -1,14 +1,9 @@
 # What `cmake --install` puts in place for consumers: the library, headers and exporters, the
 # CMake package, a pkg-config file and the licence.
+# The targets themselves join the export set in raster_setup_target(... INSTALL).
 include(CMakePackageConfigHelpers)
-install(TARGETS raster raster_scenes EXPORT raster-targets
-  ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
-  LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/raster ${PROJECT_BINARY_DIR}/src/generated/raster
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-if(RASTER_BUILD_APPS)
-  install(TARGETS ${RASTER_APPS} EXPORT raster-targets RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-endif()
 set(RASTER_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/raster)
 
 install(EXPORT raster-targets NAMESPACE raster:: DESTINATION ${RASTER_CMAKE_DIR} FILE raster-targets.cmake)

@@ -7,6 +7,8 @@ usage() {
 usage: tools/bootstrap.sh COMMAND
   run [OUTPUT.webp]  build the exporters in Release and render the tumbling cube
                      (default out/animated-cube.webp, relative to where you are)
+  format [--fix]     check that our C++ follows .clang-format (clang-format 14), showing what
+                     would change; --fix rewrites the files instead (tools/check-format.sh)
   test               build in Release and run every test
   sanitize           build with AddressSanitizer and UndefinedBehaviorSanitizer and run every test
   fuzz [SECONDS]     build the libFuzzer targets with clang; fuzz fill and line, the mesh
@@ -63,6 +65,10 @@ run)
     } >&2
     [ "$output" = - ] || mkdir -p "$(dirname "$output")"
     build/apps/bin/animated-cube "$output"
+    ;;
+format)
+    install_missing clang-format
+    tools/check-format.sh ${2:+"$2"}
     ;;
 test)
     install_missing "${base_packages[@]}" "${cluster_packages[@]}"

@@ -26,7 +26,7 @@ if(MODE STREQUAL "subdirectory")
 endif()
 
 run(${CMAKE_COMMAND} --install ${BUILD} --prefix ${WORK}/prefix)
-foreach(installed include/raster/rasterize/fill.hpp include/raster/scenes/scenes.hpp include/raster/version.hpp bin/still-cube bin/webp-frame
+foreach(installed include/raster/raster.hpp include/raster/rasterize/fill.hpp include/raster/scenes/scenes.hpp include/raster/version.hpp bin/still-cube bin/webp-frame
                   share/doc/raster/LICENSE)
   if(NOT EXISTS ${WORK}/prefix/${installed})
     message(FATAL_ERROR "cmake --install did not install ${installed}")
