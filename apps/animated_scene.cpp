@@ -10,17 +10,17 @@ int main(int argc, char** argv) {
     CLI::App app("Renders the animation of one diary scene (0.0.8 to 0.1.7; by default the original's final "
                  "animation), or of the Ptah and raster-engine seeds, to a lossless animated WebP that loops forever.",
                  "animated-scene");
-    app.footer(scene_list() +
-               "\nExamples:\n"
-               "  animated-scene                           # the original's final animation, 7.2 s\n"
-               "  animated-scene --scene shaders           # Phong and Gouraud side by side\n"
-               "  animated-scene --scene orbit --effort fast orbit.webp\n"
-               "  animated-scene --scene point-light --perspective 60 lamp.webp\n"
-               "  animated-scene --scene flythrough --width 640 --height 360 fly.webp\n"
-               "  animated-scene --scene islands --style wireframe wire.webp");
+    app.footer(scene_list() + "\nExamples:\n"
+                              "  animated-scene                           # the original's final animation, 7.2 s\n"
+                              "  animated-scene --scene shaders           # Phong and Gouraud side by side\n"
+                              "  animated-scene --scene orbit --effort fast orbit.webp\n"
+                              "  animated-scene --scene point-light --perspective 60 lamp.webp\n"
+                              "  animated-scene --scene flythrough --width 640 --height 360 fly.webp\n"
+                              "  animated-scene --scene islands --style wireframe wire.webp");
     ExportOptions options{"animated-scene.webp"};
     add_export_options(app, options);
-    add_samples_option(app, options, "1 for the diary's scenes, " + std::to_string(raster::kSmoothSamples) + " for the seeds'");
+    add_samples_option(app, options,
+                       "1 for the diary's scenes, " + std::to_string(raster::kSmoothSamples) + " for the seeds'");
     std::string name;
     add_scene_option(app, name);
     int frames = 0;
@@ -48,10 +48,16 @@ int main(int argc, char** argv) {
         }
         const raster::DiaryScene scene(name);
         const int count = frames > 0 ? frames : scene.info().frames;
-        const raster::DetailPlan plan = automatic ? plan_for(scene, options.width, options.height, count) : raster::DetailPlan{};
+        const raster::DetailPlan plan =
+            automatic ? plan_for(scene, options.width, options.height, count) : raster::DetailPlan{};
         raster::Renderer renderer(options.render_options());
-        return export_animation(app, options, count, fps, [&](raster::Framebuffer& frame, int index) {
-            render_scene(frame, raster::with_detail(scene.frame(frame.width(), frame.height(), index, count), plan), fov, style, renderer);
-        }) + describe(plan);
+        return export_animation(
+                   app, options, count, fps,
+                   [&](raster::Framebuffer& frame, int index) {
+                       render_scene(frame,
+                                    raster::with_detail(scene.frame(frame.width(), frame.height(), index, count), plan),
+                                    fov, style, renderer);
+                   }) +
+               describe(plan);
     });
 }

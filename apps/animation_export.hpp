@@ -4,11 +4,11 @@
 
 #include <raster/image/framebuffer.hpp>
 
-#include <CLI/CLI.hpp>
 #include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
+#include <CLI/CLI.hpp>
 
 // Draws frame `index` and, for a transparent background, fills `alpha` with its coverage (one
 // byte per pixel); left empty, the frame is opaque.
@@ -19,6 +19,7 @@ using RenderFrame = std::function<void(raster::Framebuffer&, int index, std::vec
 // frames are numbered PNG files in that directory instead.
 // With --frame-range only those frames are rendered, exactly as in the whole run, into an
 // animation marked with its range (webp_parts.hpp) or into their own numbered files.
-std::string export_animation(const CLI::App& app, const ExportOptions& options, int frames, int fps, const RenderFrame& render);
+std::string export_animation(const CLI::App& app, const ExportOptions& options, int frames, int fps,
+                             const RenderFrame& render);
 std::string export_animation(const CLI::App& app, const ExportOptions& options, int frames, int fps,
                              const std::function<void(raster::Framebuffer&, int)>& render);

@@ -2,10 +2,10 @@
 
 #include "export_options.hpp"
 
-#include <CLI/CLI.hpp>
 #include <functional>
 #include <optional>
 #include <string>
+#include <CLI/CLI.hpp>
 
 // Parses the command line; an exit code when the program should stop there: 0 after --help or
 // --version, 2 after a usage error (reported in one line on stderr).

@@ -13,7 +13,8 @@
 
 void check_output(const CLI::App& app, const ExportOptions& options) {
     if (options.output == "-" && options.preview) {
-        throw CLI::ValidationError("--preview shows the picture on standard output, which - takes for the file; name a file to write");
+        throw CLI::ValidationError(
+            "--preview shows the picture on standard output, which - takes for the file; name a file to write");
     }
     if (options.output == "-") {
         if (::isatty(1) == 1) {
@@ -29,10 +30,12 @@ void check_output(const CLI::App& app, const ExportOptions& options) {
     }
 }
 
-void preview(const CLI::App& app, const ExportOptions& options, const raster::Framebuffer& image, std::span<const std::uint8_t> alpha) {
+void preview(const CLI::App& app, const ExportOptions& options, const raster::Framebuffer& image,
+             std::span<const std::uint8_t> alpha) {
     if (!options.preview) return;
     const std::string why_not = show_on_terminal(image, alpha);
-    if (!why_not.empty() && !options.quiet) std::cerr << app.get_name() << ": no preview: " << why_not << '\n' << std::flush;
+    if (!why_not.empty() && !options.quiet)
+        std::cerr << app.get_name() << ": no preview: " << why_not << '\n' << std::flush;
 }
 
 void deliver(const ExportOptions& options, std::span<const std::uint8_t> bytes) {

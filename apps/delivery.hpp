@@ -4,10 +4,10 @@
 
 #include <raster/image/framebuffer.hpp>
 
-#include <CLI/CLI.hpp>
 #include <cstdint>
 #include <span>
 #include <string>
+#include <CLI/CLI.hpp>
 
 // Where a finished picture goes: a file, replaced atomically, or standard output.
 

@@ -20,6 +20,7 @@ std::string file_extension(ImageFormat format) { return format == ImageFormat::p
 
 std::string lowered_extension(const std::string& name) {
     std::string extension = std::filesystem::path(name).extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     return extension;
 }

@@ -34,12 +34,12 @@ struct ExportOptions {
     // that would replace an existing file only after every model has been read.
     std::vector<struct HeldPicture>* held = nullptr;
     std::optional<ImageFormat> format;  // default: PNG for a name ending in .png, else WebP
-    std::string frames_dir;  // an animation written as numbered PNG frames into this directory
-    std::string frame_range;  // --frame-range A..B: only those frames of the clip, as a marked part
-    bool skip_existing = false;  // --skip-existing: an output already complete is not rendered again
-    bool transparent = false;  // frames come with alpha: animations take the anim path, which keeps it
-    bool show_progress = true;  // off for the pictures of a batch, which are made several at once
-    bool preview = false;  // show the picture (an animation's first frame) on the terminal too
+    std::string frames_dir;             // an animation written as numbered PNG frames into this directory
+    std::string frame_range;            // --frame-range A..B: only those frames of the clip, as a marked part
+    bool skip_existing = false;         // --skip-existing: an output already complete is not rendered again
+    bool transparent = false;           // frames come with alpha: animations take the anim path, which keeps it
+    bool show_progress = true;          // off for the pictures of a batch, which are made several at once
+    bool preview = false;               // show the picture (an animation's first frame) on the terminal too
 
     [[nodiscard]] ImageFormat image_format() const;
 

@@ -30,8 +30,8 @@ bool holds_finished_picture(const std::filesystem::path& path, ImageFormat forma
             static constexpr std::uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
             return head.size() >= 8 && std::equal(head.begin(), head.begin() + 8, kSignature);
         };
-        const std::vector<std::uint8_t> bytes =
-            raster::read_input_file(path, raster::InputRules{"picture", std::uintmax_t{1} << 30, is_png, 8, "a PNG file", {}});
+        const std::vector<std::uint8_t> bytes = raster::read_input_file(
+            path, raster::InputRules{"picture", std::uintmax_t{1} << 30, is_png, 8, "a PNG file", {}});
         (void)raster::decode_png(bytes, static_cast<std::size_t>(raster::kMaxImageSide) * raster::kMaxImageSide);
         return true;
     } catch (const std::exception&) {

@@ -16,15 +16,16 @@ std::vector<BatchJob> plan_batch(const std::vector<std::string>& models, const s
         std::filesystem::path output = dir / std::filesystem::path(model).stem();
         output += extension;
         if (const auto [at, fresh] = claimed.emplace(output, model); !fresh) {
-            throw std::runtime_error("'" + raster::printable(at->second) + "' and '" + raster::printable(model) + "' would both write '" +
-                                     raster::printable(output.string()) + "'; render them into different --output-dir");
+            throw std::runtime_error("'" + raster::printable(at->second) + "' and '" + raster::printable(model) +
+                                     "' would both write '" + raster::printable(output.string()) +
+                                     "'; render them into different --output-dir");
         }
         raster::FileIdentity identity;
         if (raster::identity_of(output, identity)) {
             for (std::size_t i = 0; i < models.size(); ++i) {
                 if (known[i] && identities[i] == identity) {
-                    throw std::runtime_error("'" + raster::printable(output.string()) + "' is the model '" + raster::printable(models[i]) +
-                                             "'; a picture never replaces its input");
+                    throw std::runtime_error("'" + raster::printable(output.string()) + "' is the model '" +
+                                             raster::printable(models[i]) + "'; a picture never replaces its input");
                 }
             }
         }

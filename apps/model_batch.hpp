@@ -32,7 +32,8 @@ std::vector<BatchJob> plan_batch(const std::vector<std::string>& models, const s
 // many jobs `use` finished.
 template <typename Loaded>
 std::size_t run_prefetched(const std::vector<BatchJob>& jobs, const std::function<Loaded(const BatchJob&)>& load,
-                           const std::function<void(const BatchJob&, Loaded&)>& use, const std::function<void(Loaded*)>& between,
+                           const std::function<void(const BatchJob&, Loaded&)>& use,
+                           const std::function<void(Loaded*)>& between,
                            const std::function<void(const BatchJob&, const std::string&)>& fail) {
     const auto start = [&](std::size_t i) {
         try {

@@ -28,7 +28,8 @@ LoadedModel load_model(const std::string& path, const RenderPlan& plan) {
     loaded.inputs.insert(loaded.inputs.end(), plan.texture_inputs.begin(), plan.texture_inputs.end());
     loaded.warnings = model.warnings;
     if (plan.texture) {
-        for (std::string& warning : raster::replace_diffuse_maps(model, plan.texture, plan.texture_path)) loaded.warnings.push_back(warning);
+        for (std::string& warning : raster::replace_diffuse_maps(model, plan.texture, plan.texture_path))
+            loaded.warnings.push_back(warning);
     }
     for (raster::ModelPart& part : model.parts) part.sampler.filter = plan.filter;
     loaded.triangles = raster::triangle_count(model);
@@ -42,7 +43,8 @@ std::function<FinishedPicture()> render_model(const CLI::App& app, ExportOptions
     const auto start = std::chrono::steady_clock::now();
     options.inputs = loaded.inputs;
     if (!options.quiet) {
-        for (const std::string& warning : loaded.warnings) std::cerr << app.get_name() << ": warning: " << warning << '\n';
+        for (const std::string& warning : loaded.warnings)
+            std::cerr << app.get_name() << ": warning: " << warning << '\n';
     }
     const raster::ModelStage stage(loaded.model, plan.view, options.width, options.height);
     const auto draw = [&](raster::Framebuffer& frame, double turn, std::vector<std::uint8_t>& alpha) {
@@ -52,16 +54,19 @@ std::function<FinishedPicture()> render_model(const CLI::App& app, ExportOptions
     const std::string tail = ", " + std::to_string(loaded.triangles) + " triangles, ";
     const double loading = loaded.seconds;
     if (plan.frames == 0) {
-        auto finish = render_still(app, options, [&](raster::Framebuffer& frame, std::vector<std::uint8_t>& alpha) { draw(frame, 0.0, alpha); });
+        auto finish = render_still(app, options, [&](raster::Framebuffer& frame, std::vector<std::uint8_t>& alpha) {
+            draw(frame, 0.0, alpha);
+        });
         return [finish = std::move(finish), tail, loading, start] {
             FinishedPicture done = finish();
             done.report += tail + seconds_text(loading + seconds_since(start));
             return done;
         };
     }
-    std::string report = export_animation(app, options, plan.frames, plan.fps, [&](raster::Framebuffer& frame, int index, std::vector<std::uint8_t>& alpha) {
-        draw(frame, 2.0 * std::numbers::pi * index / plan.frames, alpha);
-    });
+    std::string report = export_animation(app, options, plan.frames, plan.fps,
+                                          [&](raster::Framebuffer& frame, int index, std::vector<std::uint8_t>& alpha) {
+                                              draw(frame, 2.0 * std::numbers::pi * index / plan.frames, alpha);
+                                          });
     report += tail + seconds_text(loading + seconds_since(start));
     return [report] { return FinishedPicture{{}, report, true}; };
 }

@@ -7,12 +7,12 @@
 #include <raster/render/model_scene.hpp>
 #include <raster/shade/texture.hpp>
 
-#include <CLI/CLI.hpp>
 #include <chrono>
 #include <functional>
 #include <memory>
 #include <string>
 #include <vector>
+#include <CLI/CLI.hpp>
 
 // render's models: each read with what its reading found, then drawn as a still or a turntable.
 
@@ -23,7 +23,7 @@ struct LoadedModel {
     std::vector<std::string> warnings;
     std::size_t triangles = 0;
     double seconds = 0.0;  // reading it took
-    std::string refusal;  // why a batch will not draw it, though it was read
+    std::string refusal;   // why a batch will not draw it, though it was read
 };
 
 // What every model of a run shares: how to read it and how to look at it.

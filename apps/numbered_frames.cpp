@@ -17,7 +17,8 @@
 #include <system_error>
 #include <vector>
 
-std::string export_numbered_frames(const CLI::App& app, const ExportOptions& options, int frames, int fps, const RenderFrame& render) {
+std::string export_numbered_frames(const CLI::App& app, const ExportOptions& options, int frames, int fps,
+                                   const RenderFrame& render) {
     const std::filesystem::path dir = options.frames_dir;
     std::error_code error;
     std::filesystem::create_directories(dir, error);
@@ -31,7 +32,8 @@ std::string export_numbered_frames(const CLI::App& app, const ExportOptions& opt
     // Files are written atomically, so a PNG file that decodes is a whole frame from an earlier run.
     std::vector<bool> kept_frames(static_cast<std::size_t>(end - begin));
     for (int i = begin; i < end; ++i) {
-        kept_frames[static_cast<std::size_t>(i - begin)] = options.skip_existing && holds_finished_picture(frame_file(i), ImageFormat::png);
+        kept_frames[static_cast<std::size_t>(i - begin)] =
+            options.skip_existing && holds_finished_picture(frame_file(i), ImageFormat::png);
     }
     const auto skipped = [&](int i) { return kept_frames[static_cast<std::size_t>(i - begin)]; };
     for (int i = begin; i < end; ++i) {
@@ -54,8 +56,9 @@ std::string export_numbered_frames(const CLI::App& app, const ExportOptions& opt
         progress.frame(i - begin + 1, end - begin);
     }
     const int kept = end - begin - written;
-    return "Wrote " + raster::printable(frame_file(begin).string()) + " to " + frame_file(end - 1).filename().string() + ": " +
-           std::to_string(written) + " PNG frames of " + std::to_string(options.width) + "x" + std::to_string(options.height) +
-           " for " + std::to_string(fps) + " fps, " + std::to_string(total) + " bytes" +
-           (kept > 0 ? ", " + std::to_string(kept) + " already there kept" : "") + (range ? ", " + range_text(*range) : "");
+    return "Wrote " + raster::printable(frame_file(begin).string()) + " to " + frame_file(end - 1).filename().string() +
+           ": " + std::to_string(written) + " PNG frames of " + std::to_string(options.width) + "x" +
+           std::to_string(options.height) + " for " + std::to_string(fps) + " fps, " + std::to_string(total) +
+           " bytes" + (kept > 0 ? ", " + std::to_string(kept) + " already there kept" : "") +
+           (range ? ", " + range_text(*range) : "");
 }

@@ -38,7 +38,8 @@ std::string read_finite(const std::string& given, double& value) {
     if (digits.size() > 1 && digits[0] == '+' && digits[1] != '-') digits.remove_prefix(1);
     const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
     const std::string quoted = "'" + raster::printable(given, 40) + "'";
-    if (digits.empty() || end != digits.data() + digits.size() || (error != std::errc() && error != std::errc::result_out_of_range)) {
+    if (digits.empty() || end != digits.data() + digits.size() ||
+        (error != std::errc() && error != std::errc::result_out_of_range)) {
         return quoted + " is not a number";
     }
     if (error == std::errc::result_out_of_range) {
@@ -58,7 +59,8 @@ CLI::Validator finite_number(double low, double high, bool open_ends, const std:
     if (low == 0.0 && std::isinf(high)) {
         range = open_ends ? "must be positive" : "must not be negative";
     } else if (!std::isinf(low) || !std::isinf(high)) {
-        range = "must be " + std::string(open_ends ? "strictly " : "") + "between " + shown(low) + " and " + shown(high) + unit;
+        range = "must be " + std::string(open_ends ? "strictly " : "") + "between " + shown(low) + " and " +
+                shown(high) + unit;
     }
     return {[=](std::string& given) -> std::string {
                 double value = 0.0;

@@ -1,9 +1,9 @@
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <string>
 #include <utility>
 #include <vector>
+#include <CLI/CLI.hpp>
 
 // Options that take only what they can use, each refusal a usage error in the option's terms.
 
@@ -21,8 +21,8 @@ CLI::Validator one_of(const std::vector<std::string>& names);
 // A choice taken by name only: numbers and unknown names are usage errors that list the names.
 template <typename Value>
 CLI::Option* add_choice_option(CLI::App& app, const std::string& name, Value& value,
-                               const std::vector<std::pair<std::string, Value>>& choices,
-                               const std::string& help, const std::string& default_name) {
+                               const std::vector<std::pair<std::string, Value>>& choices, const std::string& help,
+                               const std::string& default_name) {
     std::vector<std::string> names;
     for (const auto& choice : choices) names.push_back(choice.first);
     const auto store = [&value, choices](const std::string& given) {

@@ -2,11 +2,12 @@
 
 #include <algorithm>
 #include <iostream>
-#include <unistd.h>
 #include <utility>
+#include <unistd.h>
 
 Progress::Progress(std::string program, const ExportOptions& options)
-    : program_(std::move(program)), enabled_(options.show_progress && (options.progress || (!options.quiet && ::isatty(2) == 1))),
+    : program_(std::move(program)),
+      enabled_(options.show_progress && (options.progress || (!options.quiet && ::isatty(2) == 1))),
       terminal_(::isatty(2) == 1) {}
 
 Progress::~Progress() {

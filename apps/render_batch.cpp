@@ -26,12 +26,14 @@ namespace {
 
 // The models and where each picture goes, less those already there with --skip-existing
 // (counted in `kept`), with DIR made.
-std::vector<BatchJob> planned_jobs(const CLI::App& app, const RenderArguments& arguments, ImageFormat format, std::size_t& kept) {
+std::vector<BatchJob> planned_jobs(const CLI::App& app, const RenderArguments& arguments, ImageFormat format,
+                                   std::size_t& kept) {
     const ExportOptions& options = arguments.options;
     std::vector<std::string> models{arguments.model_path};
     if (app.count("output") > 0) {
         if (!looks_like_a_model(options.output)) {
-            throw CLI::ValidationError("'" + raster::printable(options.output) + "' is not a model (.obj, .gltf, .glb, .stl or .ply); "
+            throw CLI::ValidationError("'" + raster::printable(options.output) +
+                                       "' is not a model (.obj, .gltf, .glb, .stl or .ply); "
                                        "with --output-dir, pictures are named after their models");
         }
         models.push_back(options.output);
@@ -52,8 +54,8 @@ std::vector<BatchJob> planned_jobs(const CLI::App& app, const RenderArguments& a
 
 }  // namespace
 
-std::string render_batch(const CLI::App& app, const RenderArguments& arguments, ImageFormat format, raster::Renderer& renderer,
-                         std::chrono::steady_clock::time_point start) {
+std::string render_batch(const CLI::App& app, const RenderArguments& arguments, ImageFormat format,
+                         raster::Renderer& renderer, std::chrono::steady_clock::time_point start) {
     const ExportOptions& options = arguments.options;
     std::size_t kept = 0;
     std::vector<BatchJob> jobs = planned_jobs(app, arguments, format, kept);
@@ -93,7 +95,8 @@ std::string render_batch(const CLI::App& app, const RenderArguments& arguments, 
                 done.options.inputs = every_input;
                 if (!picture.written) deliver(done.options, picture.bytes);
                 raster::FileIdentity identity;  // a held picture is not written yet: the file there is not ours
-                if (done.options.held == nullptr && raster::identity_of(done.options.output, identity)) pictures.push_back(identity);
+                if (done.options.held == nullptr && raster::identity_of(done.options.output, identity))
+                    pictures.push_back(identity);
                 if (done.options.held != nullptr) {
                     held_reports[done.options.output] = picture.report;  // said once it is written
                 } else if (!options.quiet) {
@@ -126,7 +129,8 @@ std::string render_batch(const CLI::App& app, const RenderArguments& arguments, 
             if (loaded != nullptr) {  // what it read is known before anything more is written
                 for (const raster::InputRecord& input : loaded->inputs) {
                     if (std::find(pictures.begin(), pictures.end(), input.identity) != pictures.end()) {
-                        loaded->refusal = "reads '" + raster::printable(input.path.string()) + "', a picture this run wrote";
+                        loaded->refusal =
+                            "reads '" + raster::printable(input.path.string()) + "', a picture this run wrote";
                     }
                 }
                 every_input.insert(every_input.end(), loaded->inputs.begin(), loaded->inputs.end());
@@ -138,7 +142,8 @@ std::string render_batch(const CLI::App& app, const RenderArguments& arguments, 
     write_encoded();
     for (HeldPicture& picture : held) {  // every model has been read: what each read is known
         picture.options.inputs = every_input;
-        const auto job = std::find_if(jobs.begin(), jobs.end(), [&](const BatchJob& j) { return j.output.string() == picture.options.output; });
+        const auto job = std::find_if(jobs.begin(), jobs.end(),
+                                      [&](const BatchJob& j) { return j.output.string() == picture.options.output; });
         try {
             deliver(picture.options, picture.bytes);
             if (!options.quiet) std::cout << held_reports[picture.options.output] << '\n' << std::flush;
@@ -152,7 +157,8 @@ std::string render_batch(const CLI::App& app, const RenderArguments& arguments, 
     const std::string summary = std::to_string(written) + " of " + std::to_string(jobs.size()) + " models into " +
                                 raster::printable(arguments.output_dir) + " in " + seconds_text(seconds) +
                                 (kept > 0 ? ", " + std::to_string(kept) + " already there kept" : "");
-    if (written < jobs.size()) throw std::runtime_error("wrote " + summary + "; " + std::to_string(jobs.size() - written) + " failed");
+    if (written < jobs.size())
+        throw std::runtime_error("wrote " + summary + "; " + std::to_string(jobs.size() - written) + " failed");
     char rate[64];
     std::snprintf(rate, sizeof rate, " (%.1f a second)", static_cast<double>(written) / std::max(seconds, 1e-9));
     return "Rendered " + summary + rate;

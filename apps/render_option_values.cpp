@@ -16,8 +16,10 @@ std::string point_problem(const std::string& text, glm::dvec3& point) {
     std::size_t start = 0;
     for (int axis = 0; axis < 3; ++axis) {
         const std::size_t comma = text.find(',', start);
-        if ((axis < 2) != (comma != std::string::npos)) return "'" + raster::printable(text, 40) + "' is not three numbers like 1,-2,3.5";
-        if (std::string problem = read_finite(text.substr(start, comma - start), point[axis]); !problem.empty()) return problem;
+        if ((axis < 2) != (comma != std::string::npos))
+            return "'" + raster::printable(text, 40) + "' is not three numbers like 1,-2,3.5";
+        if (std::string problem = read_finite(text.substr(start, comma - start), point[axis]); !problem.empty())
+            return problem;
         start = comma + 1;
     }
     return "";
@@ -25,7 +27,8 @@ std::string point_problem(const std::string& text, glm::dvec3& point) {
 
 }  // namespace
 
-void add_point_option(CLI::App& app, const std::string& name, std::optional<glm::dvec3>& point, const std::string& help) {
+void add_point_option(CLI::App& app, const std::string& name, std::optional<glm::dvec3>& point,
+                      const std::string& help) {
     app.add_option_function<std::string>(
            name,
            [&point](const std::string& text) {
@@ -50,7 +53,8 @@ bool is_hex_colour(const std::string& text) {
 
 raster::Rgb colour_from_hex(const std::string& text) {
     const unsigned long value = std::stoul(text[0] == '#' ? text.substr(1) : text, nullptr, 16);
-    return {static_cast<std::uint8_t>(value >> 16), static_cast<std::uint8_t>(value >> 8), static_cast<std::uint8_t>(value)};
+    return {static_cast<std::uint8_t>(value >> 16), static_cast<std::uint8_t>(value >> 8),
+            static_cast<std::uint8_t>(value)};
 }
 
 std::optional<std::uint64_t> memory_size(const std::string& text) {

@@ -2,17 +2,18 @@
 
 #include <raster/image/framebuffer.hpp>
 
-#include <CLI/CLI.hpp>
 #include <cstdint>
-#include <glm/vec3.hpp>
 #include <optional>
 #include <string>
+#include <CLI/CLI.hpp>
+#include <glm/vec3.hpp>
 
 // The values render's options take beyond numbers and names: points, colours, sizes, models.
 
 // --eye 1,2,3 and the like: one word of three numbers separated by commas, so that the option
 // takes exactly one argument wherever it stands and "-3,-3,-3" is a value, not an option.
-void add_point_option(CLI::App& app, const std::string& name, std::optional<glm::dvec3>& point, const std::string& help);
+void add_point_option(CLI::App& app, const std::string& name, std::optional<glm::dvec3>& point,
+                      const std::string& help);
 // --background #RRGGBB: six hexadecimal digits, the # optional; or none.
 [[nodiscard]] bool is_hex_colour(const std::string& text);
 raster::Rgb colour_from_hex(const std::string& text);

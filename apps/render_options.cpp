@@ -40,25 +40,33 @@ void add_render_options(CLI::App& app, RenderArguments& arguments) {
         ->option_text("MODEL");
     add_export_options(app, options);
     add_samples_option(app, options, std::to_string(raster::kSmoothSamples));
-    app.add_option("more", arguments.more_models, "With --output-dir: more models, each drawn into DIR as its name with .webp or .png")
+    app.add_option("more", arguments.more_models,
+                   "With --output-dir: more models, each drawn into DIR as its name with .webp or .png")
         ->option_text("MODEL...");
-    auto* batch = app.add_option("--output-dir", arguments.output_dir,
-                                 "Render every MODEL given into DIR (made if missing) as DIR/NAME.webp, or .png with --format png. "
-                                 "The next model is read while one is drawn; a model that fails is reported and the rest "
-                                 "are still written; the exit status is 1 if any failed")
-                      ->option_text("DIR");
+    auto* batch =
+        app.add_option(
+               "--output-dir", arguments.output_dir,
+               "Render every MODEL given into DIR (made if missing) as DIR/NAME.webp, or .png with --format png. "
+               "The next model is read while one is drawn; a model that fails is reported and the rest "
+               "are still written; the exit status is 1 if any failed")
+            ->option_text("DIR");
     batch->excludes(app.get_option("--output"));
-    add_point_option(app, "--eye", view.eye, "Where the camera stands. Default: in front, to the right and above, far enough back to see the whole model");
-    add_point_option(app, "--target", view.target, "The point the camera looks at. Default: the middle of the model's bounding box");
+    add_point_option(
+        app, "--eye", view.eye,
+        "Where the camera stands. Default: in front, to the right and above, far enough back to see the whole model");
+    add_point_option(app, "--target", view.target,
+                     "The point the camera looks at. Default: the middle of the model's bounding box");
     add_point_option(app, "--up", arguments.up, "The direction that is up on screen, and the turntable's axis [0,1,0]");
     app.add_option("--fov", view.fov_degrees, "Vertical field of view in degrees, between 0 and 180 [40]")
         ->check(finite_number(0.0, 180.0, true, " degrees"))
         ->option_text("DEGREES");
     app.add_flag("--ortho", view.orthographic, "Orthographic projection: the bounding sphere fills the shorter side");
-    app.add_option("--near", view.near, "Distance to the near clipping plane, in model units. Default: just short of the model")
+    app.add_option("--near", view.near,
+                   "Distance to the near clipping plane, in model units. Default: just short of the model")
         ->check(finite_number(0.0, HUGE_VAL, true))
         ->option_text("DISTANCE");
-    app.add_option("--far", view.far, "Distance to the far clipping plane, in model units. Default: just beyond the model")
+    app.add_option("--far", view.far,
+                   "Distance to the far clipping plane, in model units. Default: just beyond the model")
         ->check(finite_number(0.0, HUGE_VAL, true))
         ->option_text("DISTANCE");
     add_integer_option(app, "--turntable", plan.frames, 0, 10000,
@@ -66,51 +74,70 @@ void add_render_options(CLI::App& app, RenderArguments& arguments) {
     add_animation_options(app, plan.fps, options);
     batch->excludes(app.get_option("--frames-dir"));
     batch->excludes(app.get_option("--preview"));  // pictures made several at once: no one of them to show
-    add_choice_option<raster::ShadingMethod>(app, "--shading", view.shading,
-                                             {{"flat", raster::ShadingMethod::flat},
-                                              {"gouraud", raster::ShadingMethod::gouraud},
-                                              {"phong", raster::ShadingMethod::phong},
-                                              {"unlit", raster::ShadingMethod::unlit}},
-                                             "Light per facet, per vertex or per pixel; unlit writes the material or texture colour "
-                                             "with no light, for exact comparisons with other renderers",
-                                             "phong");
-    add_choice_option<raster::Culling>(app, "--cull", view.cull,
-                                       {{"auto", raster::Culling::automatic}, {"back", raster::Culling::back}, {"none", raster::Culling::none}},
-                                       "Which faces to draw: auto culls back faces only of a closed model and draws an open one (a plane, a "
-                                       "leaf, a scan) from both sides; back always culls them; none draws both sides of everything",
-                                       "auto");
-    add_point_option(app, "--light", arguments.light, "Direction toward the key light. Default: over the viewer's left shoulder; a dim fill comes from the other side");
-    app.add_option("--background", arguments.background,
-                   "Background colour, or none for a transparent one (alpha in WebP and PNG, so a thumbnail sits on any page; "
-                   "a turntable then uses --encoder anim, which keeps alpha) [#30343c]")
-        ->check(CLI::Validator([](std::string& text) {
-                    return text == "none" || is_hex_colour(text) ? "" : "'" + raster::printable(text, 40) + "' is not a colour like #30343c, or none";
-                }, ""))
+    add_choice_option<raster::ShadingMethod>(
+        app, "--shading", view.shading,
+        {{"flat", raster::ShadingMethod::flat},
+         {"gouraud", raster::ShadingMethod::gouraud},
+         {"phong", raster::ShadingMethod::phong},
+         {"unlit", raster::ShadingMethod::unlit}},
+        "Light per facet, per vertex or per pixel; unlit writes the material or texture colour "
+        "with no light, for exact comparisons with other renderers",
+        "phong");
+    add_choice_option<raster::Culling>(
+        app, "--cull", view.cull,
+        {{"auto", raster::Culling::automatic}, {"back", raster::Culling::back}, {"none", raster::Culling::none}},
+        "Which faces to draw: auto culls back faces only of a closed model and draws an open one (a plane, a "
+        "leaf, a scan) from both sides; back always culls them; none draws both sides of everything",
+        "auto");
+    add_point_option(
+        app, "--light", arguments.light,
+        "Direction toward the key light. Default: over the viewer's left shoulder; a dim fill comes from the other side");
+    app.add_option(
+           "--background", arguments.background,
+           "Background colour, or none for a transparent one (alpha in WebP and PNG, so a thumbnail sits on any page; "
+           "a turntable then uses --encoder anim, which keeps alpha) [#30343c]")
+        ->check(CLI::Validator(
+            [](std::string& text) {
+                return text == "none" || is_hex_colour(text)
+                           ? ""
+                           : "'" + raster::printable(text, 40) + "' is not a colour like #30343c, or none";
+            },
+            ""))
         ->option_text("#RRGGBB|none");
-    app.add_option("--texture", plan.texture_path, "Image (PNG, JPEG, TGA, BMP or WebP) to use as every material's diffuse map")
+    app.add_option("--texture", plan.texture_path,
+                   "Image (PNG, JPEG, TGA, BMP or WebP) to use as every material's diffuse map")
         ->option_text("FILE");
-    add_choice_option<raster::TextureFilter>(app, "--filter", plan.filter,
-                                             {{"nearest", raster::TextureFilter::nearest},
-                                              {"bilinear", raster::TextureFilter::bilinear},
-                                              {"trilinear", raster::TextureFilter::trilinear}},
-                                             "Texture filtering (doc/lab/README.md#texture-filtering has the measurements)", "trilinear");
-    app.add_option("--crease", plan.obj.crease_degrees,
-                   "Normals the model lacks are smoothed across edges gentler than this angle and creased at sharper ones; 0 makes every facet flat [60]")
+    add_choice_option<raster::TextureFilter>(
+        app, "--filter", plan.filter,
+        {{"nearest", raster::TextureFilter::nearest},
+         {"bilinear", raster::TextureFilter::bilinear},
+         {"trilinear", raster::TextureFilter::trilinear}},
+        "Texture filtering (doc/lab/README.md#texture-filtering has the measurements)", "trilinear");
+    app.add_option(
+           "--crease", plan.obj.crease_degrees,
+           "Normals the model lacks are smoothed across edges gentler than this angle and creased at sharper ones; 0 makes every facet flat [60]")
         ->check(finite_number(0.0, 180.0, false, " degrees"))
         ->option_text("DEGREES");
-    app.add_option("--max-memory", arguments.max_memory,
-                   "Memory one model's reading may take, as 512M, 2G or 2.5GiB: each model is read in a process of its own, and one "
-                   "that needs more is refused in one line and the batch goes on [half the physical memory]")
-        ->check(CLI::Validator([](std::string& text) { return memory_size(text) ? "" : "'" + raster::printable(text, 40) + "' is not a size like 512M or 2G"; }, ""))
+    app.add_option(
+           "--max-memory", arguments.max_memory,
+           "Memory one model's reading may take, as 512M, 2G or 2.5GiB: each model is read in a process of its own, and one "
+           "that needs more is refused in one line and the batch goes on [half the physical memory]")
+        ->check(CLI::Validator(
+            [](std::string& text) {
+                return memory_size(text) ? "" : "'" + raster::printable(text, 40) + "' is not a size like 512M or 2G";
+            },
+            ""))
         ->option_text("SIZE");
-    app.add_option("--max-seconds", plan.obj.limits.max_seconds,
-                   "Processor and wall-clock seconds one model's reading may take before it is stopped and refused [120]")
+    app.add_option(
+           "--max-seconds", plan.obj.limits.max_seconds,
+           "Processor and wall-clock seconds one model's reading may take before it is stopped and refused [120]")
         ->check(finite_number(0.0, 1e6, true, " seconds"))
         ->option_text("SECONDS");
-    app.add_option("--confine", arguments.confine,
-                   "Read nothing outside DIR (after resolving .. and symbolic links): the model must lie inside it, and "
-                   "material libraries and textures the model names outside it are treated as missing, with a warning. "
-                   "For models you did not make (README: Rendering models you did not make)")
+    app.add_option(
+           "--confine", arguments.confine,
+           "Read nothing outside DIR (after resolving .. and symbolic links): the model must lie inside it, and "
+           "material libraries and textures the model names outside it are treated as missing, with a warning. "
+           "For models you did not make (README: Rendering models you did not make)")
         ->check(CLI::Validator(
             [](std::string& text) -> std::string {
                 // An empty name would confine nothing, silently.
@@ -147,7 +174,8 @@ void settle_arguments(const CLI::App& app, RenderArguments& arguments, const ras
         throw CLI::ValidationError("--frame-range picks frames of a turntable; add --turntable N");
     }
     if (options.skip_existing && plan.frames == 0 && arguments.output_dir.empty()) {
-        throw CLI::ValidationError("--skip-existing keeps finished turntables and the pictures of --output-dir; a single still is simply drawn again");
+        throw CLI::ValidationError(
+            "--skip-existing keeps finished turntables and the pictures of --output-dir; a single still is simply drawn again");
     }
     if (!plan.texture_path.empty()) {
         plan.texture = std::make_shared<const raster::Texture>(

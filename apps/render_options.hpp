@@ -5,11 +5,11 @@
 
 #include <raster/io/reader_service.hpp>
 
-#include <CLI/CLI.hpp>
-#include <glm/vec3.hpp>
 #include <optional>
 #include <string>
 #include <vector>
+#include <CLI/CLI.hpp>
+#include <glm/vec3.hpp>
 
 // Everything render's command line says, as its options fill it in.
 struct RenderArguments {

@@ -17,10 +17,12 @@ bool names_its_picture(const CLI::App& app, const RenderArguments& arguments) {
 
 ImageFormat picture_format(const CLI::App& app, const RenderArguments& arguments) {
     const ExportOptions& options = arguments.options;
-    const ImageFormat format = names_its_picture(app, arguments) ? options.image_format() : options.format.value_or(ImageFormat::webp);
+    const ImageFormat format =
+        names_its_picture(app, arguments) ? options.image_format() : options.format.value_or(ImageFormat::webp);
     if (arguments.plan.frames > 0 && options.frames_dir.empty() && format == ImageFormat::png) {
-        throw CLI::ValidationError("a PNG file holds one picture: write the turntable to .webp, or to numbered PNG frames "
-                                   "with --frames-dir DIR");
+        throw CLI::ValidationError(
+            "a PNG file holds one picture: write the turntable to .webp, or to numbered PNG frames "
+            "with --frames-dir DIR");
     }
     return format;
 }
@@ -28,12 +30,14 @@ ImageFormat picture_format(const CLI::App& app, const RenderArguments& arguments
 void name_the_picture(const CLI::App& app, RenderArguments& arguments, ImageFormat format) {
     ExportOptions& options = arguments.options;
     if (!arguments.more_models.empty()) {
-        throw CLI::ValidationError("several models need --output-dir DIR, for example: render a.obj b.glb --output-dir thumbs");
+        throw CLI::ValidationError(
+            "several models need --output-dir DIR, for example: render a.obj b.glb --output-dir thumbs");
     }
     if (app.count("output") > 0 && looks_like_a_model(options.output)) {
-        throw CLI::ValidationError("'" + raster::printable(options.output) +
-                                   "' looks like a model, not a picture to write: give --output-dir DIR to render several "
-                                   "models, or -o to write that name anyway");
+        throw CLI::ValidationError(
+            "'" + raster::printable(options.output) +
+            "' looks like a model, not a picture to write: give --output-dir DIR to render several "
+            "models, or -o to write that name anyway");
     }
     if (!names_its_picture(app, arguments)) {
         options.output = std::filesystem::path(arguments.model_path).stem().string() + file_extension(format);

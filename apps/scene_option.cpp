@@ -66,8 +66,10 @@ std::string describe(const raster::DetailPlan& plan) {
 
 void check_seed_options(const std::string& scene, bool automatic, int fov_degrees) {
     if (!raster::is_seed_scene(scene)) return;
-    if (automatic) throw std::invalid_argument("--detail auto plans the diary's spheres and tori; " + scene + " has none");
-    if (fov_degrees != 0) throw std::invalid_argument("--perspective applies to the diary's scenes; " + scene + " has its own camera");
+    if (automatic)
+        throw std::invalid_argument("--detail auto plans the diary's spheres and tori; " + scene + " has none");
+    if (fov_degrees != 0)
+        throw std::invalid_argument("--perspective applies to the diary's scenes; " + scene + " has its own camera");
 }
 
 void add_perspective_option(CLI::App& app, int& fov_degrees) {
@@ -81,7 +83,9 @@ void add_perspective_option(CLI::App& app, int& fov_degrees) {
 void add_render_style_option(CLI::App& app, raster::RenderStyle& style) {
     add_choice_option<raster::RenderStyle>(
         app, "--style", style,
-        {{"textured", raster::RenderStyle::textured}, {"flat", raster::RenderStyle::flat}, {"wireframe", raster::RenderStyle::wireframe}},
+        {{"textured", raster::RenderStyle::textured},
+         {"flat", raster::RenderStyle::flat},
+         {"wireframe", raster::RenderStyle::wireframe}},
         "raster-engine's render modes. textured: the scene as it is; flat: each surface in its texture's mean colour, lit "
         "once per facet; wireframe: the edges of the facets facing the eye, one-pixel lines in each surface's colour "
         "(not anti-aliased, whatever --samples says)",
@@ -91,7 +95,8 @@ void add_render_style_option(CLI::App& app, raster::RenderStyle& style) {
 namespace {
 
 template <typename Camera>
-void render_in_style(raster::Framebuffer& frame, const raster::BasicScene<Camera>& scene, raster::RenderStyle style, raster::Renderer& renderer) {
+void render_in_style(raster::Framebuffer& frame, const raster::BasicScene<Camera>& scene, raster::RenderStyle style,
+                     raster::Renderer& renderer) {
     switch (style) {
     case raster::RenderStyle::textured: renderer.render(frame, scene); break;
     case raster::RenderStyle::flat: renderer.render(frame, raster::flat_style(scene)); break;
@@ -101,13 +106,16 @@ void render_in_style(raster::Framebuffer& frame, const raster::BasicScene<Camera
 
 }  // namespace
 
-void render_scene(raster::Framebuffer& frame, const raster::PerspectiveScene& scene, raster::RenderStyle style, raster::Renderer& renderer) {
+void render_scene(raster::Framebuffer& frame, const raster::PerspectiveScene& scene, raster::RenderStyle style,
+                  raster::Renderer& renderer) {
     render_in_style(frame, scene, style, renderer);
 }
 
-void render_scene(raster::Framebuffer& frame, const raster::Scene& scene, int fov_degrees, raster::RenderStyle style, raster::Renderer& renderer) {
+void render_scene(raster::Framebuffer& frame, const raster::Scene& scene, int fov_degrees, raster::RenderStyle style,
+                  raster::Renderer& renderer) {
     if (fov_degrees != 0) {
-        render_in_style(frame, raster::in_perspective(scene, frame.width(), frame.height(), fov_degrees), style, renderer);
+        render_in_style(frame, raster::in_perspective(scene, frame.width(), frame.height(), fov_degrees), style,
+                        renderer);
     } else {
         render_in_style(frame, scene, style, renderer);
     }

@@ -5,8 +5,8 @@
 #include <raster/scenes/diary_scenes.hpp>
 #include <raster/scenes/seed_scenes.hpp>
 
-#include <CLI/CLI.hpp>
 #include <string>
+#include <CLI/CLI.hpp>
 
 // --scene NAME, any of the diary's scenes (the original's final one by default) or the other
 // seeds'; the help lists them all.
@@ -34,7 +34,8 @@ void add_render_style_option(CLI::App& app, raster::RenderStyle& style);
 // Renders the scene through the camera the option chose, in the style chosen.
 void render_scene(raster::Framebuffer& frame, const raster::Scene& scene, int fov_degrees, raster::RenderStyle style,
                   raster::Renderer& renderer);
-void render_scene(raster::Framebuffer& frame, const raster::PerspectiveScene& scene, raster::RenderStyle style, raster::Renderer& renderer);
+void render_scene(raster::Framebuffer& frame, const raster::PerspectiveScene& scene, raster::RenderStyle style,
+                  raster::Renderer& renderer);
 
 // --view NAME: a still framed on one element of the islands (raster::island_elements()).
 void add_view_option(CLI::App& app, std::string& element);

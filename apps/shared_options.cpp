@@ -12,8 +12,10 @@
 #include <vector>
 
 void add_output_options(CLI::App& app, ExportOptions& options) {
-    const std::string output_help = "Picture to write: PNG for a name ending in .png or --format png, else WebP; replaced "
-                                    "whole or not at all; - writes to standard output. Default: " + options.output;
+    const std::string output_help =
+        "Picture to write: PNG for a name ending in .png or --format png, else WebP; replaced "
+        "whole or not at all; - writes to standard output. Default: " +
+        options.output;
     auto* positional = app.add_option("output", options.output, output_help)->option_text("FILE");
     auto* named = app.add_option("-o,--output", options.output, "The same, as an option")->option_text("FILE");
     positional->excludes(named);
@@ -90,30 +92,36 @@ void add_animation_options(CLI::App& app, int& fps, ExportOptions& options) {
                        "round(1000 / fps) ms; browsers play frames of 10 ms or less at 100 ms, "
                        "so faster rates would play slower");
     add_choice_option<raster::AnimationPath>(
-        app, "--encoder", options.encoder, {{"parallel", raster::AnimationPath::parallel}, {"anim", raster::AnimationPath::anim}},
+        app, "--encoder", options.encoder,
+        {{"parallel", raster::AnimationPath::parallel}, {"anim", raster::AnimationPath::anim}},
         "parallel: each frame's changed rectangle encoded on every core while later frames render; anim: libwebp's "
         "own animation encoder, on one thread (doc/performance.md compares them)",
         "parallel");
-    auto* frames_dir = app.add_option("--frames-dir", options.frames_dir,
-                                      "Write the frames as numbered PNG files (0000.png, 0001.png, ...) into DIR, made if "
-                                      "missing, instead of one animation: for video, e.g. ffmpeg -framerate 30 -i DIR/%04d.png "
-                                      "out.mp4")
-                           ->option_text("DIR");
+    auto* frames_dir =
+        app.add_option("--frames-dir", options.frames_dir,
+                       "Write the frames as numbered PNG files (0000.png, 0001.png, ...) into DIR, made if "
+                       "missing, instead of one animation: for video, e.g. ffmpeg -framerate 30 -i DIR/%04d.png "
+                       "out.mp4")
+            ->option_text("DIR");
     for (const char* output : {"output", "--output"}) {
         if (CLI::Option* named = app.get_option_no_throw(output)) frames_dir->excludes(named);
     }
-    app.add_option("--frame-range", options.frame_range,
-                   "Render only frames A to B (both included, counted from 0) of the whole clip, each exactly as the whole "
-                   "run renders it: into an animation marked as that part, for webp-assemble to join with the others, or "
-                   "with --frames-dir into their own numbered files. A..B or A:B")
+    app.add_option(
+           "--frame-range", options.frame_range,
+           "Render only frames A to B (both included, counted from 0) of the whole clip, each exactly as the whole "
+           "run renders it: into an animation marked as that part, for webp-assemble to join with the others, or "
+           "with --frames-dir into their own numbered files. A..B or A:B")
         ->option_text("A..B")
         ->check([](const std::string& text) -> std::string {
-            return raster::frame_range_from_text(text) ? std::string() : "'" + raster::printable(text) + "' is not A..B with 0 <= A <= B";
+            return raster::frame_range_from_text(text)
+                       ? std::string()
+                       : "'" + raster::printable(text) + "' is not A..B with 0 <= A <= B";
         });
-    app.add_flag("--skip-existing", options.skip_existing,
-                 "Leave an animation that is already complete (the same size and frames, or range) as it is and render "
-                 "nothing; with --frames-dir, render only the frames whose files are missing; with render --output-dir, "
-                 "only the models whose pictures are missing. Outputs are written "
-                 "atomically, so an interrupted run leaves no partial file to mistake for a finished one; a link, a "
-                 "directory, or a file that is empty or does not decode under the name is not taken as finished");
+    app.add_flag(
+        "--skip-existing", options.skip_existing,
+        "Leave an animation that is already complete (the same size and frames, or range) as it is and render "
+        "nothing; with --frames-dir, render only the frames whose files are missing; with render --output-dir, "
+        "only the models whose pictures are missing. Outputs are written "
+        "atomically, so an interrupted run leaves no partial file to mistake for a finished one; a link, a "
+        "directory, or a file that is empty or does not decode under the name is not taken as finished");
 }

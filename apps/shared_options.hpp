@@ -4,8 +4,8 @@
 
 #include <raster/scenes/scenes.hpp>
 
-#include <CLI/CLI.hpp>
 #include <string>
+#include <CLI/CLI.hpp>
 
 // The options several exporters share, each with its help.
 

@@ -9,7 +9,8 @@
 #include <memory>
 #include <utility>
 
-std::function<FinishedPicture()> render_still(const CLI::App& app, const ExportOptions& options, const RenderStill& render) {
+std::function<FinishedPicture()> render_still(const CLI::App& app, const ExportOptions& options,
+                                              const RenderStill& render) {
     check_output(app, options);
     auto progress = std::make_shared<Progress>(app.get_name(), options);
     progress->stage("rendering");
@@ -23,8 +24,10 @@ std::function<FinishedPicture()> render_still(const CLI::App& app, const ExportO
         const std::vector<std::uint8_t> bytes = options.image_format() == ImageFormat::png
                                                     ? raster::encode_png(*frame, *alpha)
                                                     : raster::encode_webp_still(*frame, options.effort, *alpha);
-        std::string report = describe_destination(options) + ": " + std::to_string(options.width) + "x" + std::to_string(options.height) +
-                             (alpha->empty() ? " still, " : " still on a transparent background, ") + std::to_string(bytes.size()) + " bytes";
+        std::string report = describe_destination(options) + ": " + std::to_string(options.width) + "x" +
+                             std::to_string(options.height) +
+                             (alpha->empty() ? " still, " : " still on a transparent background, ") +
+                             std::to_string(bytes.size()) + " bytes";
         return FinishedPicture{bytes, std::move(report)};
     };
 }
@@ -35,6 +38,7 @@ std::string export_still(const CLI::App& app, const ExportOptions& options, cons
     return done.report;
 }
 
-std::string export_still(const CLI::App& app, const ExportOptions& options, const std::function<void(raster::Framebuffer&)>& render) {
+std::string export_still(const CLI::App& app, const ExportOptions& options,
+                         const std::function<void(raster::Framebuffer&)>& render) {
     return export_still(app, options, [&](raster::Framebuffer& frame, std::vector<std::uint8_t>&) { render(frame); });
 }

@@ -4,11 +4,11 @@
 
 #include <raster/image/framebuffer.hpp>
 
-#include <CLI/CLI.hpp>
 #include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
+#include <CLI/CLI.hpp>
 
 // Draws a frame and, for a transparent background, fills `alpha` with its coverage (one byte
 // per pixel); left empty, the frame is opaque.
@@ -25,6 +25,7 @@ struct FinishedPicture {
 };
 // The same in steps: checks the output and renders now, and returns the step that encodes, which
 // may run on another thread while the next picture is drawn; deliver() then writes the bytes.
-std::function<FinishedPicture()> render_still(const CLI::App& app, const ExportOptions& options, const RenderStill& render);
+std::function<FinishedPicture()> render_still(const CLI::App& app, const ExportOptions& options,
+                                              const RenderStill& render);
 std::string export_still(const CLI::App& app, const ExportOptions& options,
                          const std::function<void(raster::Framebuffer&)>& render);

@@ -10,6 +10,5 @@ int main(int argc, char** argv) {
     ExportOptions options{"still-unit-cube.webp"};
     add_export_options(app, options);
 
-    return run_exporter(app, options, argc, argv,
-                        [&] { return export_still(app, options, raster::render_unit_cube); });
+    return run_exporter(app, options, argc, argv, [&] { return export_still(app, options, raster::render_unit_cube); });
 }

@@ -8,8 +8,8 @@
 #include <cerrno>
 #include <csignal>
 #include <cstring>
-#include <fcntl.h>
 #include <iostream>
+#include <fcntl.h>
 #include <poll.h>
 #include <sys/ioctl.h>
 #include <termios.h>
@@ -80,7 +80,8 @@ raster::KittyAnswer ask_terminal(int tty, std::chrono::milliseconds timeout) {
     std::string answer;
     const auto deadline = std::chrono::steady_clock::now() + timeout;
     for (;;) {
-        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+        const auto left =
+            std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
         if (left.count() <= 0 || held.arrived()) return raster::KittyAnswer::incomplete;
         pollfd wait{tty, POLLIN, 0};
         const int ready = ::poll(&wait, 1, static_cast<int>(left.count()));
@@ -91,13 +92,16 @@ raster::KittyAnswer ask_terminal(int tty, std::chrono::milliseconds timeout) {
         if (got < 0 && (errno == EINTR || errno == EAGAIN)) continue;
         if (got <= 0) return raster::KittyAnswer::incomplete;
         answer.append(buffer, static_cast<std::size_t>(got));
-        if (const raster::KittyAnswer read = raster::read_kitty_answer(answer, id); read != raster::KittyAnswer::incomplete) return read;
+        if (const raster::KittyAnswer read = raster::read_kitty_answer(answer, id);
+            read != raster::KittyAnswer::incomplete)
+            return read;
     }
 }
 
 }  // namespace
 
-std::string show_on_terminal(const raster::Framebuffer& image, std::span<const std::uint8_t> alpha, std::chrono::milliseconds timeout) {
+std::string show_on_terminal(const raster::Framebuffer& image, std::span<const std::uint8_t> alpha,
+                             std::chrono::milliseconds timeout) {
     if (::isatty(1) != 1) return "standard output is not a terminal";
     const Descriptor tty(::open("/dev/tty", O_RDWR | O_NOCTTY | O_CLOEXEC));
     if (tty.get() < 0) return "no controlling terminal to ask whether it shows pictures";
@@ -105,20 +109,20 @@ std::string show_on_terminal(const raster::Framebuffer& image, std::span<const s
     if (::tcgetpgrp(tty.get()) != ::getpgrp()) return "running in the background, where the terminal cannot be asked";
     std::cout << std::flush;
     switch (ask_terminal(tty.get(), timeout)) {
-    case raster::KittyAnswer::supported:
-        break;
+    case raster::KittyAnswer::supported: break;
     case raster::KittyAnswer::unsupported:
         return "the terminal does not show Kitty graphics (Kitty, WezTerm, Ghostty and Konsole do)";
-    case raster::KittyAnswer::refused:
-        return "the terminal refused the Kitty graphics query";
+    case raster::KittyAnswer::refused: return "the terminal refused the Kitty graphics query";
     case raster::KittyAnswer::incomplete:
         return "the terminal did not answer the Kitty graphics query within " + std::to_string(timeout.count()) + " ms";
     }
     raster::TerminalWindow window;
-    if (winsize size{}; ::ioctl(1, TIOCGWINSZ, &size) == 0) window = {size.ws_col, size.ws_row, size.ws_xpixel, size.ws_ypixel};
+    if (winsize size{}; ::ioctl(1, TIOCGWINSZ, &size) == 0)
+        window = {size.ws_col, size.ws_row, size.ws_xpixel, size.ws_ypixel};
     const std::vector<std::uint8_t> png = raster::encode_png(image, alpha);
     // The cursor ends beside the picture's last row; the newline brings it under the picture.
-    if (!write_all(1, raster::kitty_display(png, raster::display_cells(image.width(), image.height(), window)) + "\n")) {
+    if (!write_all(1,
+                   raster::kitty_display(png, raster::display_cells(image.width(), image.height(), window)) + "\n")) {
         return std::string("cannot write to the terminal: ") + std::strerror(errno);
     }
     return "";

@@ -9,16 +9,18 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
-#include <fcntl.h>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <fcntl.h>
 #include <unistd.h>
 
 namespace {
 
 // DIR/0000.png, DIR/0001.png, ...: the names ffmpeg's -i DIR/%04d.png reads.
-std::filesystem::path numbered(const std::filesystem::path& dir, int index) { return dir / raster::frame_file_name(index); }
+std::filesystem::path numbered(const std::filesystem::path& dir, int index) {
+    return dir / raster::frame_file_name(index);
+}
 
 // A hidden directory inside DIR that holds the frames until all are written, removed with
 // whatever is left in it when the run ends, so that a failure leaves neither a partial set nor it.
@@ -27,7 +29,8 @@ public:
     explicit StagingDir(const std::filesystem::path& dir) {
         std::string name = (dir / ".webp-frames-XXXXXX").string();
         if (::mkdtemp(name.data()) == nullptr) {
-            throw std::runtime_error("cannot make a temporary directory in '" + raster::printable(dir.string()) + "': " + std::strerror(errno));
+            throw std::runtime_error("cannot make a temporary directory in '" + raster::printable(dir.string()) +
+                                     "': " + std::strerror(errno));
         }
         path_ = name;
     }
@@ -57,9 +60,10 @@ bool move_to_free_name(const std::filesystem::path& from, const std::filesystem:
 void refuse_old_frames(const std::string& dir, int frame_count) {
     std::error_code error;
     for (int index = 0; index < frame_count; ++index) {
-        if (std::filesystem::symlink_status(numbered(dir, index), error).type() != std::filesystem::file_type::not_found) {
-            throw std::runtime_error("'" + raster::printable(dir) + "' already holds frames (" + numbered(dir, index).filename().string() +
-                                     "); choose an empty directory");
+        if (std::filesystem::symlink_status(numbered(dir, index), error).type() !=
+            std::filesystem::file_type::not_found) {
+            throw std::runtime_error("'" + raster::printable(dir) + "' already holds frames (" +
+                                     numbered(dir, index).filename().string() + "); choose an empty directory");
         }
     }
 }
@@ -72,7 +76,8 @@ void move_into_place(const std::filesystem::path& staging, const std::string& di
         if (!move_to_free_name(numbered(staging, index), numbered(dir, index))) {
             const std::string why = std::strerror(errno);
             for (int moved = 0; moved < index; ++moved) std::filesystem::remove(numbered(dir, moved), error);
-            throw std::runtime_error("cannot move " + numbered(dir, index).filename().string() + " into '" + raster::printable(dir) + "': " + why);
+            throw std::runtime_error("cannot move " + numbered(dir, index).filename().string() + " into '" +
+                                     raster::printable(dir) + "': " + why);
         }
     }
 }
@@ -91,13 +96,17 @@ int main(int argc, char** argv) {
     std::string input;
     app.add_option("input", input, "The animated (or still) WebP file to read")->required()->option_text("FILE");
     std::string dir;
-    app.add_option("dir", dir, "Directory for the frames, made if missing; DIR/0000.png is frame 0. Refused if any frame's "
-                   "file is there already; the frames appear together once all are written, or none do")->required()->option_text("DIR");
+    app.add_option("dir", dir,
+                   "Directory for the frames, made if missing; DIR/0000.png is frame 0. Refused if any frame's "
+                   "file is there already; the frames appear together once all are written, or none do")
+        ->required()
+        ->option_text("DIR");
     ExportOptions options{""};
     app.add_flag("-q,--quiet", options.quiet, "Print nothing when all goes well");
 
     return run_exporter(app, options, argc, argv, [&] {
-        if (raster::FileIdentity identity; raster::identity_of(input, identity)) options.inputs.push_back({input, identity, "animation"});
+        if (raster::FileIdentity identity; raster::identity_of(input, identity))
+            options.inputs.push_back({input, identity, "animation"});
         std::error_code error;
         std::filesystem::create_directories(dir, error);
         if (error || !std::filesystem::is_directory(dir)) {
@@ -112,8 +121,10 @@ int main(int argc, char** argv) {
         std::uintmax_t bytes = 0;
         while (const raster::DecodedFrame* frame = reader.next()) {
             // An opaque frame stays RGB; a transparent one keeps its alpha.
-            const bool opaque = std::all_of(frame->alpha.begin(), frame->alpha.end(), [](std::uint8_t a) { return a == 255; });
-            const std::vector<std::uint8_t> png = raster::encode_png(frame->image, opaque ? std::span<const std::uint8_t>() : frame->alpha);
+            const bool opaque =
+                std::all_of(frame->alpha.begin(), frame->alpha.end(), [](std::uint8_t a) { return a == 255; });
+            const std::vector<std::uint8_t> png =
+                raster::encode_png(frame->image, opaque ? std::span<const std::uint8_t>() : frame->alpha);
             raster::write_output_file(numbered(staging.path(), count), png, options.policy, options.inputs);
             bytes += png.size();
             shortest = count == 0 ? frame->duration_ms : std::min(shortest, frame->duration_ms);
@@ -121,10 +132,12 @@ int main(int argc, char** argv) {
             ++count;
         }
         move_into_place(staging.path(), dir, count);
-        const std::string timing = shortest == longest ? std::to_string(shortest) + " ms each"
-                                                       : "lasting " + std::to_string(shortest) + " to " + std::to_string(longest) + " ms";
-        return "Wrote " + raster::printable(numbered(dir, 0).string()) + " to " + numbered(dir, count - 1).filename().string() + ": " +
-               std::to_string(count) + " frames of " + std::to_string(info.width) + "x" + std::to_string(info.height) + ", " + timing +
-               ", " + std::to_string(bytes) + " bytes";
+        const std::string timing =
+            shortest == longest ? std::to_string(shortest) + " ms each"
+                                : "lasting " + std::to_string(shortest) + " to " + std::to_string(longest) + " ms";
+        return "Wrote " + raster::printable(numbered(dir, 0).string()) + " to " +
+               numbered(dir, count - 1).filename().string() + ": " + std::to_string(count) + " frames of " +
+               std::to_string(info.width) + "x" + std::to_string(info.height) + ", " + timing + ", " +
+               std::to_string(bytes) + " bytes";
     });
 }

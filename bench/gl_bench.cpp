@@ -14,11 +14,11 @@
 #include "gl_scene.hpp"
 
 #include <raster/camera/perspective_camera.hpp>
+#include <raster/geometry/shapes.hpp>
+#include <raster/io/webp.hpp>
 #include <raster/render/scene.hpp>
 #include <raster/scenes/diary_scenes.hpp>
 #include <raster/scenes/seed_scenes.hpp>
-#include <raster/io/webp.hpp>
-#include <raster/geometry/shapes.hpp>
 
 #include "rasterize/setup_perspective.hpp"
 
@@ -75,7 +75,8 @@ struct IdShader {
     static constexpr bool kFacetNormal = false;
     [[nodiscard]] Varying vertex(const raster::Corner& corner) const noexcept { return corner.uv; }
     [[nodiscard]] raster::Rgb pixel(const Varying& id) const noexcept {
-        const auto low = static_cast<std::uint32_t>(std::lround(id.x)), high = static_cast<std::uint32_t>(std::lround(id.y));
+        const auto low = static_cast<std::uint32_t>(std::lround(id.x)),
+                   high = static_cast<std::uint32_t>(std::lround(id.y));
         return {static_cast<std::uint8_t>(high), static_cast<std::uint8_t>(low >> 8), static_cast<std::uint8_t>(low)};
     }
 };
@@ -97,8 +98,10 @@ raster::Mesh with_facet_ids(const raster::Mesh& mesh) {
     return out;
 }
 
-raster::PerspectiveScene raster_scene(const Case& c, const std::shared_ptr<const raster::Mesh>& mesh, int frame, int frames) {
-    const raster::PerspectiveCamera camera = raster::PerspectiveCamera::look_at(c.width, c.height, kEye, glm::vec3(0), {0, 1, 0}, kLens);
+raster::PerspectiveScene raster_scene(const Case& c, const std::shared_ptr<const raster::Mesh>& mesh, int frame,
+                                      int frames) {
+    const raster::PerspectiveCamera camera =
+        raster::PerspectiveCamera::look_at(c.width, c.height, kEye, glm::vec3(0), {0, 1, 0}, kLens);
     raster::PerspectiveScene scene{camera, {0, 0, 0}, {{kLight, 1.0F}}, {}, {}};
     const raster::IntensityMaterial material{{52, 110, 210}, 0.25F, 0.75F, std::nullopt};
     scene.objects.push_back({mesh, tumble(frame, frames, scale_of(c.name)), material, raster::ShadingMethod::flat});
@@ -118,8 +121,8 @@ struct Disagreements {
         }
         std::array<glm::dvec2, 3> at{};
         for (std::size_t k = 0; k < 3; ++k) {
-            const std::optional<raster::SubpixelPoint> p =
-                raster::snap_to_subpixel(camera.screen_from_clip(camera.clip_from_world(posed.positions[posed.facets[id - 1].corners[k]])));
+            const std::optional<raster::SubpixelPoint> p = raster::snap_to_subpixel(
+                camera.screen_from_clip(camera.clip_from_world(posed.positions[posed.facets[id - 1].corners[k]])));
             if (!p) {
                 ++elsewhere;
                 return;
@@ -131,7 +134,8 @@ struct Disagreements {
         bool horizontal = false;
         for (std::size_t k = 0; k < 3; ++k) {
             const glm::dvec2 along = at[(k + 1) % 3] - at[k];
-            const double distance = std::abs(along.x * (centre.y - at[k].y) - along.y * (centre.x - at[k].x)) / glm::length(along);
+            const double distance =
+                std::abs(along.x * (centre.y - at[k].y) - along.y * (centre.x - at[k].x)) / glm::length(along);
             if (distance < nearest) nearest = distance, horizontal = along.y == 0.0;
         }
         if (nearest == 0.0 && horizontal) {
@@ -143,14 +147,18 @@ struct Disagreements {
         }
     }
     void print() const {
-        std::fprintf(stderr, "pixels apart: %ld on a horizontal edge exactly, %ld within a subpixel of an edge, %ld farther, %ld background in GL\n",
-                     horizontal_tie, near_edge, elsewhere, gl_background);
+        std::fprintf(
+            stderr,
+            "pixels apart: %ld on a horizontal edge exactly, %ld within a subpixel of an edge, %ld farther, %ld background in GL\n",
+            horizontal_tie, near_edge, elsewhere, gl_background);
     }
 };
 
 // One GL frame: the mesh lit by GL's fixed-function flat shading, or unlit with each facet's id.
-void gl_frame(const bench::GlContext& context, const Case& c, const raster::Mesh& mesh, const std::vector<std::uint8_t>* ids, int frame, int frames) {
-    const raster::PerspectiveCamera camera = raster::PerspectiveCamera::look_at(c.width, c.height, kEye, glm::vec3(0), {0, 1, 0}, kLens);
+void gl_frame(const bench::GlContext& context, const Case& c, const raster::Mesh& mesh,
+              const std::vector<std::uint8_t>* ids, int frame, int frames) {
+    const raster::PerspectiveCamera camera =
+        raster::PerspectiveCamera::look_at(c.width, c.height, kEye, glm::vec3(0), {0, 1, 0}, kLens);
     context.begin();
     const bool depth = c.name != "cube";
     glClearColor(0, 0, 0, 1);
@@ -176,8 +184,10 @@ void gl_frame(const bench::GlContext& context, const Case& c, const raster::Mesh
     } else {
         glEnable(GL_LIGHTING);
         glEnable(GL_LIGHT0);
-        const GLfloat toward[] = {kLight.x, kLight.y, kLight.z, 0.0F}, white[] = {0.75F, 0.75F, 0.75F, 1}, none[] = {0, 0, 0, 1};
-        const GLfloat colour[] = {52 / 255.0F, 110 / 255.0F, 210 / 255.0F, 1.0F}, ambient[] = {0.25F, 0.25F, 0.25F, 1.0F};
+        const GLfloat toward[] = {kLight.x, kLight.y, kLight.z, 0.0F}, white[] = {0.75F, 0.75F, 0.75F, 1},
+                      none[] = {0, 0, 0, 1};
+        const GLfloat colour[] = {52 / 255.0F, 110 / 255.0F, 210 / 255.0F, 1.0F},
+                      ambient[] = {0.25F, 0.25F, 0.25F, 1.0F};
         glLightfv(GL_LIGHT0, GL_POSITION, toward);  // in world space: the modelview is the view here
         glLightfv(GL_LIGHT0, GL_DIFFUSE, white);
         glLightfv(GL_LIGHT0, GL_SPECULAR, none);
@@ -191,11 +201,11 @@ void gl_frame(const bench::GlContext& context, const Case& c, const raster::Mesh
     glMultMatrixd(glm::value_ptr(model));
     std::vector<GLuint> indices;
     indices.reserve(mesh.facets.size() * 3);
-    for (const raster::Facet& facet : mesh.facets) indices.insert(indices.end(), facet.corners.begin(), facet.corners.end());
+    for (const raster::Facet& facet : mesh.facets)
+        indices.insert(indices.end(), facet.corners.begin(), facet.corners.end());
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(indices.size()), GL_UNSIGNED_INT, indices.data());
     context.finish();
 }
-
 
 // The cases drawn through GLSL: raster's own scenes, lit in linear light.
 bool is_scene_case(const std::string& name) { return name == "ptah" || name == "flythrough" || name == "point-lights"; }
@@ -205,28 +215,35 @@ using AnyScene = std::variant<raster::Scene, raster::PerspectiveScene>;
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app("Times one side of raster against Mesa's software OpenGL (tools/bench-gl.sh runs both, interleaved).", "raster-vs-gl");
+    CLI::App app("Times one side of raster against Mesa's software OpenGL (tools/bench-gl.sh runs both, interleaved).",
+                 "raster-vs-gl");
     std::string side = "raster", name = "torus-1";
     int width = 800, height = 600, frames = 360, threads = 1, samples = 1;
     bool agreement = false, explain = false;
     raster::RenderOptions::DepthFirst depth_first = raster::RenderOptions::DepthFirst::automatic;
     std::string picture;
     app.add_option("--side", side, "raster or gl")->check(CLI::IsMember({"raster", "gl"}));
-    app.add_option("--case", name, "torus-D (torus(24 D, 16 D)), cube, ptah or flythrough (the seed scenes), point-lights (the diary's)");
+    app.add_option(
+        "--case", name,
+        "torus-D (torus(24 D, 16 D)), cube, ptah or flythrough (the seed scenes), point-lights (the diary's)");
     app.add_option("--width", width)->check(CLI::Range(1, 16383));
     app.add_option("--height", height)->check(CLI::Range(1, 16383));
     app.add_option("--frames", frames)->check(CLI::Range(1, 100000));
     app.add_option("--threads", threads, "raster's threads (GL's come from LP_NUM_THREADS)")->check(CLI::Range(0, 256));
-    app.add_option("--samples", samples, "Samples per pixel on both sides: raster's multisampling, GL's multisample framebuffer")
+    app.add_option("--samples", samples,
+                   "Samples per pixel on both sides: raster's multisampling, GL's multisample framebuffer")
         ->check(CLI::IsMember({1, 2, 4, 8, 16}));
     app.add_option("--depth-first", depth_first, "raster's depth pass: auto (where it pays), always or never")
         ->transform(CLI::CheckedTransformer(std::map<std::string, raster::RenderOptions::DepthFirst>{
             {"auto", raster::RenderOptions::DepthFirst::automatic},
             {"always", raster::RenderOptions::DepthFirst::always},
             {"never", raster::RenderOptions::DepthFirst::never}}));
-    app.add_flag("--agreement", agreement, "Also draw every 30th frame unlit on both sides and report the share of covered pixels that agree");
-    app.add_flag("--explain", explain, "With --agreement: sort the pixels where the two differ by how near GL's facet's edge they lie");
-    app.add_option("--picture", picture, "Also write the first frame from both sides to PREFIX-raster.webp and PREFIX-gl.webp")
+    app.add_flag("--agreement", agreement,
+                 "Also draw every 30th frame unlit on both sides and report the share of covered pixels that agree");
+    app.add_flag("--explain", explain,
+                 "With --agreement: sort the pixels where the two differ by how near GL's facet's edge they lie");
+    app.add_option("--picture", picture,
+                   "Also write the first frame from both sides to PREFIX-raster.webp and PREFIX-gl.webp")
         ->option_text("PREFIX");
     CLI11_PARSE(app, argc, argv);
     try {
@@ -236,10 +253,14 @@ int main(int argc, char** argv) {
         const auto shared = std::make_shared<const raster::Mesh>(mesh);
         raster::Framebuffer image(width, height);
         raster::DepthBuffer depth;  // for the agreement check's direct draws
-        raster::Renderer renderer({.threads = threads, .samples = samples, .depth_first = depth_first});  // its threads start once, as llvmpipe's do
-        const std::optional<raster::SeedScene> seed =
-            name == "ptah" || name == "flythrough" ? std::optional<raster::SeedScene>(std::in_place, name) : std::nullopt;
-        const std::optional<raster::DiaryScene> diary = name == "point-lights" ? std::optional<raster::DiaryScene>(std::in_place, name) : std::nullopt;
+        raster::Renderer renderer({.threads = threads,
+                                   .samples = samples,
+                                   .depth_first = depth_first});  // its threads start once, as llvmpipe's do
+        const std::optional<raster::SeedScene> seed = name == "ptah" || name == "flythrough"
+                                                          ? std::optional<raster::SeedScene>(std::in_place, name)
+                                                          : std::nullopt;
+        const std::optional<raster::DiaryScene> diary =
+            name == "point-lights" ? std::optional<raster::DiaryScene>(std::in_place, name) : std::nullopt;
         const auto scene_at = [&](int i) -> AnyScene {
             if (seed) return seed->frame(width, height, i, frames);
             if (diary) return diary->frame(width, height, i, frames);
@@ -248,17 +269,24 @@ int main(int argc, char** argv) {
         std::size_t facets = mesh.facets.size();
         if (lit_scene) {
             facets = 0;
-            std::visit([&](const auto& scene) { for (const raster::SceneObject& object : scene.objects) facets += object.mesh->facets.size(); }, scene_at(0));
+            std::visit(
+                [&](const auto& scene) {
+                    for (const raster::SceneObject& object : scene.objects) facets += object.mesh->facets.size();
+                },
+                scene_at(0));
         }
         std::unique_ptr<bench::GlContext> gl;
         std::unique_ptr<bench::GlScene> gl_scene;
-        if (side == "gl" || agreement || !picture.empty()) gl = std::make_unique<bench::GlContext>(width, height, samples);
+        if (side == "gl" || agreement || !picture.empty())
+            gl = std::make_unique<bench::GlContext>(width, height, samples);
         if (gl && lit_scene) gl_scene = std::make_unique<bench::GlScene>();
         const auto draw_gl = [&](int i) {
             if (!lit_scene) return gl_frame(*gl, c, mesh, nullptr, i, frames);
             std::visit([&](const auto& scene) { gl_scene->draw(*gl, scene); }, scene_at(i));
         };
-        const auto draw_raster = [&](int i) { std::visit([&](const auto& scene) { renderer.render(image, scene); }, scene_at(i)); };
+        const auto draw_raster = [&](int i) {
+            std::visit([&](const auto& scene) { renderer.render(image, scene); }, scene_at(i));
+        };
         const auto start = std::chrono::steady_clock::now();
         for (int i = 0; i < frames; ++i) {
             if (side == "raster") {
@@ -280,17 +308,20 @@ int main(int argc, char** argv) {
             std::vector<std::uint8_t> colours;
             for (const glm::vec2 uv : ids.uvs) {
                 const auto id = static_cast<std::uint32_t>(uv.x) | (static_cast<std::uint32_t>(uv.y) << 16);
-                colours.insert(colours.end(), {static_cast<std::uint8_t>(id >> 16), static_cast<std::uint8_t>(id >> 8), static_cast<std::uint8_t>(id)});
+                colours.insert(colours.end(), {static_cast<std::uint8_t>(id >> 16), static_cast<std::uint8_t>(id >> 8),
+                                               static_cast<std::uint8_t>(id)});
             }
             long covered = 0, same = 0;
             Disagreements why_apart;
             for (int i = 0; i < frames; i += 30) {
                 gl_frame(*gl, c, ids, &colours, i, frames);
-                const raster::PerspectiveCamera camera = raster::PerspectiveCamera::look_at(width, height, kEye, glm::vec3(0), {0, 1, 0}, kLens);
+                const raster::PerspectiveCamera camera =
+                    raster::PerspectiveCamera::look_at(width, height, kEye, glm::vec3(0), {0, 1, 0}, kLens);
                 image.clear({0, 0, 0});
                 const raster::Mesh posed = raster::posed(ids, tumble(i, frames, scale_of(name)));
                 depth.prepare(width, height);
-                raster::detail::draw_facets_in_perspective(image, name == "cube" ? nullptr : &depth, camera, posed, IdShader{});
+                raster::detail::draw_facets_in_perspective(image, name == "cube" ? nullptr : &depth, camera, posed,
+                                                           IdShader{});
                 for (int y = 0; y < height; ++y) {
                     for (int x = 0; x < width; ++x) {
                         const raster::Rgb a = image.pixel(x, y), b = gl->pixel(x, y);
@@ -310,7 +341,8 @@ int main(int argc, char** argv) {
             constexpr int kClose = 2;
             long covered = 0, close = 0;
             for (int i = 0; i < frames; i += 30) {
-                const raster::Rgb background = std::visit([](const auto& scene) { return scene.background; }, scene_at(i));
+                const raster::Rgb background =
+                    std::visit([](const auto& scene) { return scene.background; }, scene_at(i));
                 draw_raster(i);
                 draw_gl(i);
                 for (int y = 0; y < height; ++y) {
@@ -318,7 +350,10 @@ int main(int argc, char** argv) {
                         const raster::Rgb a = image.pixel(x, y), b = gl->pixel(x, y);
                         if (a == background && b == background) continue;
                         ++covered;
-                        close += std::abs(a.r - b.r) <= kClose && std::abs(a.g - b.g) <= kClose && std::abs(a.b - b.b) <= kClose ? 1 : 0;
+                        close += std::abs(a.r - b.r) <= kClose && std::abs(a.g - b.g) <= kClose &&
+                                         std::abs(a.b - b.b) <= kClose
+                                     ? 1
+                                     : 0;
                     }
                 }
             }

@@ -9,7 +9,8 @@ namespace {
 template <typename Camera>
 glm::dmat4 view_of(const Camera& camera) {
     const glm::dvec3 o = camera.view_from_world(glm::vec3(0.0F));
-    const glm::dvec3 x = camera.view_from_world(glm::vec3(1, 0, 0)) - o, y = camera.view_from_world(glm::vec3(0, 1, 0)) - o,
+    const glm::dvec3 x = camera.view_from_world(glm::vec3(1, 0, 0)) - o,
+                     y = camera.view_from_world(glm::vec3(0, 1, 0)) - o,
                      z = camera.view_from_world(glm::vec3(0, 0, 1)) - o;
     return {glm::dvec4(x, 0), glm::dvec4(y, 0), glm::dvec4(z, 0), glm::dvec4(o, 1)};
 }
@@ -18,7 +19,8 @@ glm::dmat4 view_of(const Camera& camera) {
 
 GlContext::GlContext(int width, int height, int samples)
     : width_(width), height_(height), pixels_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4) {
-    const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24, OSMESA_PROFILE, OSMESA_COMPAT_PROFILE, 0};
+    const int attributes[] = {
+        OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24, OSMESA_PROFILE, OSMESA_COMPAT_PROFILE, 0};
     context_ = OSMesaCreateContextAttribs(attributes, nullptr);
     if (context_ == nullptr || !OSMesaMakeCurrent(context_, pixels_.data(), GL_UNSIGNED_BYTE, width, height)) {
         throw std::runtime_error("cannot create an OSMesa context");

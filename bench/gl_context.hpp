@@ -7,9 +7,9 @@
 #include <raster/image/framebuffer.hpp>
 
 #define GL_GLEXT_PROTOTYPES 1  // OSMesa exports the GL entry points the GLSL and multisample paths call
-#include <GL/osmesa.h>
 #include <GL/gl.h>
 #include <GL/glext.h>
+#include <GL/osmesa.h>
 
 #include <cstdint>
 #include <vector>
@@ -31,7 +31,8 @@ public:
     void finish() const;
     [[nodiscard]] raster::Framebuffer image() const;
     [[nodiscard]] raster::Rgb pixel(int x, int y) const {
-        const std::size_t i = (static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)) * 4;
+        const std::size_t i =
+            (static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)) * 4;
         return {pixels_[i], pixels_[i + 1], pixels_[i + 2]};
     }
 

@@ -166,14 +166,18 @@ GLuint GlScene::texture(const raster::Texture& texture, raster::Sampler sampler)
         const raster::Framebuffer& image = texture.level(level);
         std::vector<std::uint8_t> rows;
         for (int y = image.height() - 1; y >= 0; --y) {
-            const std::uint8_t* row = image.bytes().data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width()) * 3;
+            const std::uint8_t* row =
+                image.bytes().data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width()) * 3;
             rows.insert(rows.end(), row, row + static_cast<std::size_t>(image.width()) * 3);
         }
         glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-        glTexImage2D(GL_TEXTURE_2D, static_cast<GLint>(level), GL_SRGB8, image.width(), image.height(), 0, GL_RGB, GL_UNSIGNED_BYTE, rows.data());
+        glTexImage2D(GL_TEXTURE_2D, static_cast<GLint>(level), GL_SRGB8, image.width(), image.height(), 0, GL_RGB,
+                     GL_UNSIGNED_BYTE, rows.data());
     }
     const bool nearest = sampler.filter == raster::TextureFilter::nearest;
-    const GLint minify = nearest ? GL_NEAREST : (sampler.filter == raster::TextureFilter::bilinear ? GL_LINEAR : GL_LINEAR_MIPMAP_LINEAR);
+    const GLint minify =
+        nearest ? GL_NEAREST
+                : (sampler.filter == raster::TextureFilter::bilinear ? GL_LINEAR : GL_LINEAR_MIPMAP_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, minify);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, nearest ? GL_NEAREST : GL_LINEAR);
     const GLint wrap = sampler.wrap == raster::TextureWrap::repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE;
@@ -184,14 +188,17 @@ GLuint GlScene::texture(const raster::Texture& texture, raster::Sampler sampler)
     return name;
 }
 
-void GlScene::draw(const GlContext& context, const raster::PerspectiveScene& scene) { draw_scene(context, scene, true); }
+void GlScene::draw(const GlContext& context, const raster::PerspectiveScene& scene) {
+    draw_scene(context, scene, true);
+}
 void GlScene::draw(const GlContext& context, const raster::Scene& scene) { draw_scene(context, scene, false); }
 
 template <typename Camera>
 void GlScene::draw_scene(const GlContext& context, const raster::BasicScene<Camera>& scene, bool perspective) {
     context.begin();
     const raster::Rgb bg = scene.background;
-    glClearColor(static_cast<float>(bg.r) / 255.0F, static_cast<float>(bg.g) / 255.0F, static_cast<float>(bg.b) / 255.0F, 1.0F);
+    glClearColor(static_cast<float>(bg.r) / 255.0F, static_cast<float>(bg.g) / 255.0F,
+                 static_cast<float>(bg.b) / 255.0F, 1.0F);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);  // on equal depth the later facet wins, as in raster
@@ -212,16 +219,17 @@ void GlScene::draw_scene(const GlContext& context, const raster::BasicScene<Came
     }
     const glm::vec3 eye = scene.camera.eye(), to_eye = -scene.camera.direction();
     const raster::DepthDarkening dark = scene.darkening.value_or(raster::DepthDarkening{});
-    const std::string lights = "#define DIRECTIONAL " + std::to_string(directional) + "\n#define POINTS " + std::to_string(points) +
-                               "\n#define PERSPECTIVE " + (perspective ? "1" : "0") + "\n#define DARKENING " + (scene.darkening ? "1" : "0") + "\n";
+    const std::string lights = "#define DIRECTIONAL " + std::to_string(directional) + "\n#define POINTS " +
+                               std::to_string(points) + "\n#define PERSPECTIVE " + (perspective ? "1" : "0") +
+                               "\n#define DARKENING " + (scene.darkening ? "1" : "0") + "\n";
     glEnableVertexAttribArray(0);
     glEnableVertexAttribArray(1);
     glEnableVertexAttribArray(2);
     for (const raster::SceneObject& object : scene.objects) {
         const auto* material = std::get_if<raster::LinearMaterial>(&object.material);
         if (!object.mesh || material == nullptr) throw std::runtime_error("the GLSL side draws Phase 2 materials only");
-        const GLuint used = program(lights + "#define SHINY " + (material->shininess ? "1" : "0") + "\n#define TEXTURED " +
-                                    (object.texture ? "1" : "0") + "\n");
+        const GLuint used = program(lights + "#define SHINY " + (material->shininess ? "1" : "0") +
+                                    "\n#define TEXTURED " + (object.texture ? "1" : "0") + "\n");
         glUseProgram(used);
         const auto at = [&](const char* name) { return glGetUniformLocation(used, name); };
         glUniformMatrix4fv(at("clip_from_world"), 1, GL_FALSE, glm::value_ptr(clip_from_world));

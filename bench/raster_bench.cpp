@@ -2,10 +2,10 @@
 // 0.0.17 torus tumble, 360 frames rendered in memory and not encoded, at five mesh details and
 // five image sizes. Prints both tables with the original's published numbers beside ours, and a
 // third of ours: every torus scene at its own detail, Phase 1 against Phase 2's linear light.
-#include <raster/scenes/diary_scenes.hpp>
-#include <raster/scenes/seed_scenes.hpp>
 #include <raster/geometry/shapes.hpp>
 #include <raster/platform/cores.hpp>
+#include <raster/scenes/diary_scenes.hpp>
+#include <raster/scenes/seed_scenes.hpp>
 #include "command_line.hpp"
 #include "help_format.hpp"
 #include "option_checks.hpp"
@@ -14,15 +14,15 @@
 #include <chrono>
 #include <cstdio>
 #include <fstream>
-#include <span>
 #include <iostream>
 #include <memory>
+#include <span>
 #include <sstream>
 #include <string>
 #include <utility>
+#include <vector>
 #include <sys/utsname.h>
 #include <unistd.h>
-#include <vector>
 
 namespace {
 
@@ -31,23 +31,33 @@ struct Case {
     int detail;         // torus(24 * detail, 16 * detail)
     int width;
     int height;
-    double original_fps;  // the original's published figure (macOS, machine not stated); 0: none
+    double original_fps;          // the original's published figure (macOS, machine not stated); 0: none
     std::string scene = "torus";  // the "scenes" table renders each scene's own meshes
     int fov = 0;                  // and, when not 0, through this pinhole (--perspective)
     std::vector<double> fps{};
 };
 
 std::vector<Case> cases() {
-    return {{"detail", 1, 800, 600, 659.08},        {"detail", 2, 800, 600, 544.20},
-            {"detail", 4, 800, 600, 361.44},        {"detail", 8, 800, 600, 184.38},
-            {"detail", 16, 800, 600, 77.68},        {"resolution", 1, 800, 600, 704.76},
-            {"resolution", 1, 1280, 720, 502.97},   {"resolution", 1, 1920, 1080, 244.07},
-            {"resolution", 1, 3840, 2160, 65.38},   {"resolution", 1, 7680, 4320, 16.65},
-            {"scenes", 2, 800, 600, 0.0, "torus"},  {"scenes", 2, 800, 600, 0.0, "materials"},
-            {"scenes", 2, 800, 600, 0.0, "three-lights"}, {"scenes", 2, 800, 600, 0.0, "point-lights"},
-            {"scenes", 2, 800, 600, 0.0, "shaders"}, {"scenes", 2, 800, 600, 0.0, "torus", 60},
-            {"scenes", 2, 800, 600, 0.0, "point-lights", 60}, {"scenes", 2, 800, 600, 0.0, "ptah"},
-            {"scenes", 2, 800, 600, 0.0, "flythrough"}, {"scenes", 2, 800, 600, 0.0, "islands"}};
+    return {{"detail", 1, 800, 600, 659.08},
+            {"detail", 2, 800, 600, 544.20},
+            {"detail", 4, 800, 600, 361.44},
+            {"detail", 8, 800, 600, 184.38},
+            {"detail", 16, 800, 600, 77.68},
+            {"resolution", 1, 800, 600, 704.76},
+            {"resolution", 1, 1280, 720, 502.97},
+            {"resolution", 1, 1920, 1080, 244.07},
+            {"resolution", 1, 3840, 2160, 65.38},
+            {"resolution", 1, 7680, 4320, 16.65},
+            {"scenes", 2, 800, 600, 0.0, "torus"},
+            {"scenes", 2, 800, 600, 0.0, "materials"},
+            {"scenes", 2, 800, 600, 0.0, "three-lights"},
+            {"scenes", 2, 800, 600, 0.0, "point-lights"},
+            {"scenes", 2, 800, 600, 0.0, "shaders"},
+            {"scenes", 2, 800, 600, 0.0, "torus", 60},
+            {"scenes", 2, 800, 600, 0.0, "point-lights", 60},
+            {"scenes", 2, 800, 600, 0.0, "ptah"},
+            {"scenes", 2, 800, 600, 0.0, "flythrough"},
+            {"scenes", 2, 800, 600, 0.0, "islands"}};
 }
 
 // Frames per second for `frames` frames of the torus tumble at this case's detail and size.
@@ -86,9 +96,9 @@ std::pair<std::size_t, std::size_t> drawn_size(const Case& c) {
         return {vertices, 2 * vertices};
     }
     std::pair<std::size_t, std::size_t> size{0, 0};
-    const std::vector<raster::SceneObject> objects = raster::is_seed_scene(c.scene)
-                                                         ? raster::SeedScene(c.scene).frame(c.width, c.height, 0, 1).objects
-                                                         : raster::DiaryScene(c.scene).frame(c.width, c.height, 0, 1).objects;
+    const std::vector<raster::SceneObject> objects =
+        raster::is_seed_scene(c.scene) ? raster::SeedScene(c.scene).frame(c.width, c.height, 0, 1).objects
+                                       : raster::DiaryScene(c.scene).frame(c.width, c.height, 0, 1).objects;
     for (const raster::SceneObject& object : objects) {
         size.first += object.mesh->positions.size();
         size.second += object.mesh->facets.size();
@@ -113,8 +123,8 @@ std::string machine() {
     }
     utsname system{};
     ::uname(&system);
-    return model + ", " + std::to_string(raster::available_cores()) + " logical cores, " +
-           system.sysname + " " + system.release + ", compiled by " + __VERSION__;
+    return model + ", " + std::to_string(raster::available_cores()) + " logical cores, " + system.sysname + " " +
+           system.release + ", compiled by " + __VERSION__;
 }
 
 std::string format(const char* pattern, double a, double b = 0, double c = 0) {
@@ -140,9 +150,10 @@ int main(int argc, char** argv) {
                        "Runs of every case, interleaved; the tables show the median and the range");
     app.add_option("--csv", csv, "Also write the measurements as CSV to this file")->option_text("FILE");
     std::string only = "all";
-    add_choice_option<std::string>(app, "--table", only,
-                                   {{"all", "all"}, {"detail", "detail"}, {"resolution", "resolution"}, {"scenes", "scenes"}},
-                                   "Which table to measure: the original's two, our scenes, or all", "all");
+    add_choice_option<std::string>(
+        app, "--table", only,
+        {{"all", "all"}, {"detail", "detail"}, {"resolution", "resolution"}, {"scenes", "scenes"}},
+        "Which table to measure: the original's two, our scenes, or all", "all");
     if (const std::optional<int> exit_code = parse_command_line(app, argc, argv)) return *exit_code;
 
     if (!csv.empty()) {
@@ -170,7 +181,9 @@ int main(int argc, char** argv) {
     out << "Machine: " << machine() << "\n"
         << frames << " frames per run, median of " << repetitions << " interleaved runs (min-max); the original's "
         << "figures are from its benchmarks post (macOS, machine not stated)\n\n";
-    const auto has = [&](const char* table) { return std::any_of(all.begin(), all.end(), [&](const Case& c) { return c.table == table; }); };
+    const auto has = [&](const char* table) {
+        return std::any_of(all.begin(), all.end(), [&](const Case& c) { return c.table == table; });
+    };
     if (has("detail")) out << "| Vertices | Facets | FPS (raster) | FPS (original) |\n|---|---|---|---|\n";
     for (const Case& c : all) {
         if (c.table != "detail") continue;
@@ -188,11 +201,14 @@ int main(int argc, char** argv) {
                       *std::max_element(c.fps.begin(), c.fps.end()))
             << " | " << format("%.2f", c.original_fps) << " |\n";
     }
-    if (has("scenes")) out << "\n| Scene (800x600; diary scenes each torus(48, 32)) | Light | FPS (raster) |\n|---|---|---|\n";
+    if (has("scenes"))
+        out << "\n| Scene (800x600; diary scenes each torus(48, 32)) | Light | FPS (raster) |\n|---|---|---|\n";
     for (const Case& c : all) {
         if (c.table != "scenes") continue;
         out << "| " << c.scene << (c.fov == 0 ? "" : ", --perspective " + std::to_string(c.fov)) << " | "
-            << (c.scene == "torus" ? "Phase 1, 8-bit" : (raster::is_seed_scene(c.scene) ? "linear, textured" : "Phase 2, linear")) << " | "
+            << (c.scene == "torus" ? "Phase 1, 8-bit"
+                                   : (raster::is_seed_scene(c.scene) ? "linear, textured" : "Phase 2, linear"))
+            << " | "
             << format("%.1f (%.1f-%.1f)", median(c.fps), *std::min_element(c.fps.begin(), c.fps.end()),
                       *std::max_element(c.fps.begin(), c.fps.end()))
             << " |\n";
@@ -203,13 +219,14 @@ int main(int argc, char** argv) {
         table << "table,scene,fov,vertices,facets,width,height,fps_median,fps_min,fps_max,original_fps\n";
         for (const Case& c : all) {
             const auto [vertices, facets] = drawn_size(c);
-            table << c.table << "," << c.scene << "," << c.fov << "," << vertices << "," << facets << "," << c.width << "," << c.height << ","
-                  << median(c.fps) << "," << *std::min_element(c.fps.begin(), c.fps.end()) << ","
-                  << *std::max_element(c.fps.begin(), c.fps.end()) << "," << c.original_fps << "\n";
+            table << c.table << "," << c.scene << "," << c.fov << "," << vertices << "," << facets << "," << c.width
+                  << "," << c.height << "," << median(c.fps) << "," << *std::min_element(c.fps.begin(), c.fps.end())
+                  << "," << *std::max_element(c.fps.begin(), c.fps.end()) << "," << c.original_fps << "\n";
         }
         const std::string text = table.str();
         try {
-            raster::write_output_file(csv, std::span(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()), {});
+            raster::write_output_file(csv, std::span(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()),
+                                      {});
         } catch (const std::exception& error) {
             std::cerr << "raster-bench: " << error.what() << "\n";
             return 1;

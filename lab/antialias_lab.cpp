@@ -10,11 +10,11 @@
 #include "lab_args.hpp"
 
 #include <raster/geometry/mesh.hpp>
+#include <raster/image/colour.hpp>
 #include <raster/render/samples.hpp>
 #include <raster/render/scene.hpp>
 #include <raster/scenes/diary_scenes.hpp>
 #include <raster/scenes/seed_scenes.hpp>
-#include <raster/image/colour.hpp>
 
 #include <algorithm>
 #include <array>
@@ -112,17 +112,21 @@ std::vector<double> sampled(const std::vector<Triangle>& frame, int samples, boo
     for (const Triangle& t : frame) {
         const auto first = static_cast<std::uint32_t>(mesh->positions.size());
         for (const glm::dvec2 p : t) mesh->positions.emplace_back((p.x - centre) / scale, (centre - p.y) / scale, 0.0F);
-        mesh->facets.push_back(raster::facet_facing_away(mesh->positions, first, first + 1, first + 2, {0.0F, 0.0F, 1.0F}));
+        mesh->facets.push_back(
+            raster::facet_facing_away(mesh->positions, first, first + 1, first + 2, {0.0F, 0.0F, 1.0F}));
     }
     mesh->normals.assign(mesh->positions.size(), {0.0F, 0.0F, -1.0F});
     raster::Scene scene{raster::OrthoCamera(kSide, kSide), {0, 0, 0}, {}, {}, {}};
-    scene.objects.push_back({mesh, glm::mat4(1.0F), raster::LinearMaterial{{0, 0, 0}, {1, 1, 1}, {0, 0, 0}, {}}, raster::ShadingMethod::unlit});
+    scene.objects.push_back({mesh, glm::mat4(1.0F), raster::LinearMaterial{{0, 0, 0}, {1, 1, 1}, {0, 0, 0}, {}},
+                             raster::ShadingMethod::unlit});
     raster::Framebuffer image(kSide, kSide);
     raster::DepthBuffer depth;
     raster::render(image, scene, depth, {1, samples, every});
     std::vector<double> coverage(kSide * kSide);
     for (int y = 0; y < kSide; ++y) {
-        for (int x = 0; x < kSide; ++x) coverage[static_cast<std::size_t>(y * kSide + x)] = raster::linear_from_srgb_channel(image.pixel(x, y).g / 255.0);
+        for (int x = 0; x < kSide; ++x)
+            coverage[static_cast<std::size_t>(y * kSide + x)] =
+                raster::linear_from_srgb_channel(image.pixel(x, y).g / 255.0);
     }
     return coverage;
 }
@@ -141,8 +145,9 @@ Triangle random_triangle(std::mt19937& random, double size, double min_area) {
     for (;;) {
         const glm::dvec2 middle(where(random), where(random));
         Triangle t;
-        for (glm::dvec2& p : t) p = glm::dvec2(on_grid(std::clamp(middle.x + offset(random), 1.0, kSide - 2.0)),
-                                              on_grid(std::clamp(middle.y + offset(random), 1.0, kSide - 2.0)));
+        for (glm::dvec2& p : t)
+            p = glm::dvec2(on_grid(std::clamp(middle.x + offset(random), 1.0, kSide - 2.0)),
+                           on_grid(std::clamp(middle.y + offset(random), 1.0, kSide - 2.0)));
         if (std::abs(twice_area(t)) / 2 >= min_area) return t;
     }
 }
@@ -211,7 +216,8 @@ std::vector<bool> edge_pixels(const std::vector<std::vector<double>>& areas) {
     return edge;
 }
 
-void measure(Error& error, const std::vector<double>& estimate, const std::vector<double>& exact, const std::vector<bool>& edge) {
+void measure(Error& error, const std::vector<double>& estimate, const std::vector<double>& exact,
+             const std::vector<bool>& edge) {
     for (std::size_t i = 0; i < exact.size(); ++i) {
         const double e = std::abs(estimate[i] - exact[i]);
         error.worst = std::max(error.worst, e);
@@ -228,7 +234,8 @@ template <typename Scene>
 std::vector<double> times(const Scene& scene, int repetitions) {
     std::vector<raster::Renderer> renderers;
     for (const bool every : {false, true}) {
-        for (const int samples : raster::kSampleCounts) renderers.emplace_back(raster::RenderOptions{1, samples, every});
+        for (const int samples : raster::kSampleCounts)
+            renderers.emplace_back(raster::RenderOptions{1, samples, every});
     }
     raster::Framebuffer frame(800, 600);
     std::vector<std::vector<double>> seconds(renderers.size());
@@ -236,7 +243,8 @@ std::vector<double> times(const Scene& scene, int repetitions) {
         for (std::size_t k = 0; k < renderers.size(); ++k) {
             const auto start = std::chrono::steady_clock::now();
             renderers[k].render(frame, scene);
-            seconds[k].push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+            seconds[k].push_back(
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
         }
     }
     std::vector<double> medians;
@@ -280,13 +288,15 @@ int main(int argc, char** argv) {
         means.emplace_back();
         for (std::size_t k = 0; k < errors.size(); ++k) {
             const bool analytic = k == errors.size() - 1;
-            const std::string method = analytic ? "analytic over" : std::to_string(raster::kSampleCounts[k]) + " samples";
+            const std::string method =
+                analytic ? "analytic over" : std::to_string(raster::kSampleCounts[k]) + " samples";
             const double mean = errors[k].sum / static_cast<double>(std::max(errors[k].pixels, 1L));
             if (!analytic) means.back().push_back(mean);
-            table << c.name << ',' << method << ',' << (analytic ? 0 : raster::kSampleCounts[k]) << ',' << mean << ',' << errors[k].worst << ','
-                  << errors[k].pixels << '\n';
+            table << c.name << ',' << method << ',' << (analytic ? 0 : raster::kSampleCounts[k]) << ',' << mean << ','
+                  << errors[k].worst << ',' << errors[k].pixels << '\n';
             char row[160];
-            std::snprintf(row, sizeof row, "| %s | %s | %.4f | %.3f |\n", c.name.c_str(), method.c_str(), mean, errors[k].worst);
+            std::snprintf(row, sizeof row, "| %s | %s | %.4f | %.3f |\n", c.name.c_str(), method.c_str(), mean,
+                          errors[k].worst);
             summary << row;
         }
         std::cout << "antialias-lab: " << c.name << " measured\n";
@@ -300,14 +310,16 @@ int main(int argc, char** argv) {
     timing << "samples,torus ms,ptah ms,torus supersampled ms,ptah supersampled ms";
     for (const std::string& name : names) timing << ',' << name;
     timing << '\n';
-    summary << "\n| samples | torus, ms per 800 x 600 frame | supersampled | ptah, ms | supersampled |\n|---|---|---|---|---|\n";
+    summary
+        << "\n| samples | torus, ms per 800 x 600 frame | supersampled | ptah, ms | supersampled |\n|---|---|---|---|---|\n";
     for (std::size_t k = 0; k < counts; ++k) {
-        timing << raster::kSampleCounts[k] << ',' << torus_ms[k] << ',' << ptah_ms[k] << ',' << torus_ms[counts + k] << ',' << ptah_ms[counts + k];
+        timing << raster::kSampleCounts[k] << ',' << torus_ms[k] << ',' << ptah_ms[k] << ',' << torus_ms[counts + k]
+               << ',' << ptah_ms[counts + k];
         for (const auto& by_count : means) timing << ',' << by_count[k];
         timing << '\n';
         char row[160];
-        std::snprintf(row, sizeof row, "| %d | %.1f | %.1f | %.1f | %.1f |\n", raster::kSampleCounts[k], torus_ms[k], torus_ms[counts + k], ptah_ms[k],
-                      ptah_ms[counts + k]);
+        std::snprintf(row, sizeof row, "| %d | %.1f | %.1f | %.1f | %.1f |\n", raster::kSampleCounts[k], torus_ms[k],
+                      torus_ms[counts + k], ptah_ms[k], ptah_ms[counts + k]);
         summary << row;
     }
     std::cout << "antialias-lab: wrote " << (*out / "antialias.csv").string() << '\n';

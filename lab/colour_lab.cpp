@@ -13,10 +13,10 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
-#include <optional>
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -29,9 +29,9 @@ struct Method {
     std::string id;
     std::string label;
     Encoder encode;
-    std::int64_t wrong = 0;   // floats whose byte differs from the definition
-    int worst = 0;            // the largest difference, in levels
-    double ns = 0.0;          // median nanoseconds per channel
+    std::int64_t wrong = 0;  // floats whose byte differs from the definition
+    int worst = 0;           // the largest difference, in levels
+    double ns = 0.0;         // median nanoseconds per channel
     double ns_low = 0.0, ns_high = 0.0;
 };
 
@@ -140,8 +140,9 @@ int main(int argc, char** argv) {
         for (std::size_t m = 0; m < methods.size(); ++m) {
             const auto start = std::chrono::steady_clock::now();
             for (const float v : inputs) sink += methods[m].encode(v);
-            times[m].push_back(std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count() /
-                               static_cast<double>(inputs.size()));
+            times[m].push_back(
+                std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count() /
+                static_cast<double>(inputs.size()));
         }
     }
     for (std::size_t m = 0; m < methods.size(); ++m) {
@@ -154,17 +155,19 @@ int main(int argc, char** argv) {
     std::ofstream csv(out / "colour.csv");
     csv << "method,wrong_floats,worst_levels,ns,ns_low,ns_high,product\n";  // labels have commas: see the summary
     for (const Method& m : methods) {
-        csv << m.id << ',' << m.wrong << ',' << m.worst << ',' << m.ns << ',' << m.ns_low << ',' << m.ns_high
-            << ',' << (m.id == "thresholds") << '\n';
+        csv << m.id << ',' << m.wrong << ',' << m.worst << ',' << m.ns << ',' << m.ns_low << ',' << m.ns_high << ','
+            << (m.id == "thresholds") << '\n';
     }
     std::ofstream summary(out / "colour-summary.md");
     summary << "# Colour encoding summary\n\nWritten by `colour-lab` (`tools/bootstrap.sh lab`): every one of the "
             << one + 1 << " floats in [0, 1] encoded by each method and compared with the definition in double; "
-            << "time is the median of 11 interleaved passes over 2^20 random values (checksum " << (sink & 0xFF) << ").\n\n"
+            << "time is the median of 11 interleaved passes over 2^20 random values (checksum " << (sink & 0xFF)
+            << ").\n\n"
             << "| method | floats off the definition | worst (levels) | ns per channel (range) |\n|---|---|---|---|\n";
     for (const Method& m : methods) {
-        summary << "| " << m.label << " (`" << m.id << "`) | " << m.wrong << " | " << m.worst << " | " << number(m.ns, "%.2f")
-                << " (" << number(m.ns_low, "%.2f") << "-" << number(m.ns_high, "%.2f") << ") |\n";
+        summary << "| " << m.label << " (`" << m.id << "`) | " << m.wrong << " | " << m.worst << " | "
+                << number(m.ns, "%.2f") << " (" << number(m.ns_low, "%.2f") << "-" << number(m.ns_high, "%.2f")
+                << ") |\n";
     }
     std::cerr << "colour-lab: wrote " << (out / "colour.csv").string() << " and colour-summary.md\n";
     return 0;

@@ -26,12 +26,9 @@ PixelRect window_at(std::int64_t offset) {
     return {static_cast<int>(offset), static_cast<int>(offset), kWindow, kWindow};
 }
 
-std::string at_offset(const std::string& name, std::int64_t offset) {
-    return name + "@" + std::to_string(offset);
-}
+std::string at_offset(const std::string& name, std::int64_t offset) { return name + "@" + std::to_string(offset); }
 
-std::vector<Polygon> random_triangles(std::mt19937& random, int count, double offset, double spread,
-                                      int bits) {
+std::vector<Polygon> random_triangles(std::mt19937& random, int count, double offset, double spread, int bits) {
     std::uniform_real_distribution<double> coordinate(-spread, kWindow + spread);
     std::vector<Polygon> triangles;
     for (int i = 0; i < count; ++i) {
@@ -53,7 +50,8 @@ std::vector<Polygon> slivers(std::mt19937& random, int count, double offset) {
         const double bx = coordinate(random), by = coordinate(random);
         const double t = 0.5, length = std::hypot(bx - ax, by - ay) + 1e-9, w = thickness(random);
         const double cx = ax + t * (bx - ax) - w * (by - ay) / length, cy = ay + t * (by - ay) + w * (bx - ax) / length;
-        triangles.push_back({on_grid(offset + ax, offset + ay, kSubpixelBits), on_grid(offset + bx, offset + by, kSubpixelBits),
+        triangles.push_back({on_grid(offset + ax, offset + ay, kSubpixelBits),
+                             on_grid(offset + bx, offset + by, kSubpixelBits),
                              on_grid(offset + cx, offset + cy, kSubpixelBits)});
     }
     return triangles;
@@ -119,12 +117,15 @@ std::vector<PolygonCorpus> polygon_corpora() {
     for (const std::int64_t offset : kOffsets) {
         std::mt19937 random(1234);  // the same shapes at every offset
         const PixelRect window = window_at(offset);
-        corpora.push_back({at_offset("grid16", offset), window, random_triangles(random, 300, static_cast<double>(offset), 8.0, 4)});
-        corpora.push_back({at_offset("grid256", offset), window, random_triangles(random, 300, static_cast<double>(offset), 8.0, 8)});
+        corpora.push_back(
+            {at_offset("grid16", offset), window, random_triangles(random, 300, static_cast<double>(offset), 8.0, 4)});
+        corpora.push_back(
+            {at_offset("grid256", offset), window, random_triangles(random, 300, static_cast<double>(offset), 8.0, 8)});
         corpora.push_back({at_offset("tiny", offset), window, triangles_of_size(1.5, 300, window, 77)});
         corpora.push_back({at_offset("slivers", offset), window, slivers(random, 200, static_cast<double>(offset))});
         corpora.push_back({at_offset("quads", offset), window, convex_quads(random, 200, static_cast<double>(offset))});
-        corpora.push_back({at_offset("huge", offset), window, random_triangles(random, 40, static_cast<double>(offset), 3000.0, kSubpixelBits)});
+        corpora.push_back({at_offset("huge", offset), window,
+                           random_triangles(random, 40, static_cast<double>(offset), 3000.0, kSubpixelBits)});
     }
     return corpora;
 }

@@ -41,7 +41,7 @@ inline constexpr std::int64_t kFarOffset = 1'000'000;
 // `count` triangles of about `size` pixels across, on the 1/kExactOne grid, inside `window`.
 [[nodiscard]] std::vector<Polygon> triangles_of_size(double size, int count, PixelRect window, unsigned seed);
 // `count` segments of `length` pixels inside `window`.
-[[nodiscard]] std::vector<std::pair<glm::ivec2, glm::ivec2>> segments_of_length(int length, int count,
-                                                                               PixelRect window, unsigned seed);
+[[nodiscard]] std::vector<std::pair<glm::ivec2, glm::ivec2>> segments_of_length(int length, int count, PixelRect window,
+                                                                                unsigned seed);
 
 }  // namespace lab

@@ -15,9 +15,7 @@ void Coverage::hit_row(std::int64_t y, std::int64_t x_begin, std::int64_t x_end)
     for (std::int64_t x = x_begin; x < x_end; ++x) ++counts_[index(x, y)];
 }
 
-std::int64_t Coverage::total() const {
-    return std::accumulate(counts_.begin(), counts_.end(), std::int64_t{0});
-}
+std::int64_t Coverage::total() const { return std::accumulate(counts_.begin(), counts_.end(), std::int64_t{0}); }
 
 void Coverage::clear() { std::fill(counts_.begin(), counts_.end(), 0); }
 

@@ -2,8 +2,8 @@
 
 #include "rasterize/setup_ortho.hpp"
 
-#include <raster/shade/shaders.hpp>
 #include <raster/geometry/shapes.hpp>
+#include <raster/shade/shaders.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -30,7 +30,8 @@ struct FixedDepth {
 
 // A square of side 2.4 centred on the origin, facing -Z, moved by `model`.
 raster::Mesh square(const glm::mat4& model) {
-    return raster::posed(raster::ground_quad({-1.2F, -1.2F, 0}, {-1.2F, 1.2F, 0}, {1.2F, 1.2F, 0}, {1.2F, -1.2F, 0}), model);
+    return raster::posed(raster::ground_quad({-1.2F, -1.2F, 0}, {-1.2F, 1.2F, 0}, {1.2F, 1.2F, 0}, {1.2F, -1.2F, 0}),
+                         model);
 }
 
 // The view depth of the plane through a posed square at a pixel centre, in double.
@@ -45,7 +46,7 @@ double plane_depth(const raster::Mesh& mesh, const raster::OrthoCamera& camera, 
 struct Pair {
     std::string scene;
     double parameter;
-    raster::Mesh first;   // drawn first
+    raster::Mesh first;  // drawn first
     raster::Mesh second;
 };
 
@@ -67,8 +68,8 @@ std::vector<Pair> pairs() {
 }
 
 template <typename Format>
-void draw_pair(raster::Framebuffer& image, raster::DepthBuffer& depth, const raster::OrthoCamera& camera, const Pair& pair,
-               Format format) {
+void draw_pair(raster::Framebuffer& image, raster::DepthBuffer& depth, const raster::OrthoCamera& camera,
+               const Pair& pair, Format format) {
     image.clear({0, 0, 0});
     depth.prepare(kSize, kSize);
     const raster::IntensityLighting first({kFirst, 1.0F, 0.0F, {}}, {}, {0, 0, -1});

@@ -27,7 +27,8 @@ double exact_intensity(const raster::IntensityMaterial& material, std::span<cons
         const glm::dvec3 l = glm::normalize(glm::dvec3(light.toward));
         double received = std::max(0.0, glm::dot(normal, l));
         if (material.shininess) {
-            received += std::pow(std::max(0.0, glm::dot(normal, glm::normalize(l + to_eye))), double{*material.shininess});
+            received +=
+                std::pow(std::max(0.0, glm::dot(normal, glm::normalize(l + to_eye))), double{*material.shininess});
         }
         lit += double{light.intensity} * received;
     }
@@ -62,14 +63,17 @@ ExactImage ray_cast(const raster::OrthoCamera& camera, int width, int height, st
                 const std::optional<double> t = raster::first_hit(objects[k].shape, o, d);
                 if (!t || *t >= nearest) continue;
                 nearest = *t;
-                const glm::dvec3 n = glm::normalize(prepared[k].normal_matrix * raster::surface_normal(objects[k].shape, o + *t * d));
+                const glm::dvec3 n =
+                    glm::normalize(prepared[k].normal_matrix * raster::surface_normal(objects[k].shape, o + *t * d));
                 const double intensity = exact_intensity(objects[k].material, lights, n, to_eye);
                 const raster::Rgb base = objects[k].material.base;
-                colour = raster::Rgb{rounded(base.r * intensity), rounded(base.g * intensity), rounded(base.b * intensity)};
+                colour =
+                    raster::Rgb{rounded(base.r * intensity), rounded(base.g * intensity), rounded(base.b * intensity)};
             }
             if (!colour) continue;
             image.colour.set_pixel(i, j, *colour);
-            const std::size_t at = static_cast<std::size_t>(j) * static_cast<std::size_t>(width) + static_cast<std::size_t>(i);
+            const std::size_t at =
+                static_cast<std::size_t>(j) * static_cast<std::size_t>(width) + static_cast<std::size_t>(i);
             image.covered[at] = 1;
             image.depth[at] = nearest;
         }

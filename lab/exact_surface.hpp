@@ -1,9 +1,9 @@
 #pragma once
 
-#include <raster/image/framebuffer.hpp>
-#include <raster/shade/intensity_lighting.hpp>
 #include <raster/camera/ortho_camera.hpp>
 #include <raster/geometry/shapes.hpp>
+#include <raster/image/framebuffer.hpp>
+#include <raster/shade/intensity_lighting.hpp>
 
 #include <cstdint>
 #include <span>
@@ -28,11 +28,12 @@ struct ExactImage {
 };
 
 // The intensity of the Phase 1 model in double precision for a unit normal.
-[[nodiscard]] double exact_intensity(const raster::IntensityMaterial& material, std::span<const raster::DirectionalLight> lights,
-                                     glm::dvec3 normal, glm::dvec3 to_eye);
+[[nodiscard]] double exact_intensity(const raster::IntensityMaterial& material,
+                                     std::span<const raster::DirectionalLight> lights, glm::dvec3 normal,
+                                     glm::dvec3 to_eye);
 
 [[nodiscard]] ExactImage ray_cast(const raster::OrthoCamera& camera, int width, int height,
-                                  std::span<const ExactObject> objects, std::span<const raster::DirectionalLight> lights,
-                                  raster::Rgb background);
+                                  std::span<const ExactObject> objects,
+                                  std::span<const raster::DirectionalLight> lights, raster::Rgb background);
 
 }  // namespace lab

@@ -18,13 +18,13 @@ struct Box {
     std::int64_t x0, y0, x1, y1;  // inclusive pixel bounds, clipped to the target
 };
 
-inline std::optional<Box> clipped_box(double min_x, double min_y, double max_x, double max_y,
-                               const Coverage& target) {
+inline std::optional<Box> clipped_box(double min_x, double min_y, double max_x, double max_y, const Coverage& target) {
     const PixelRect& r = target.rect();
-    const Box box{std::max<std::int64_t>(static_cast<std::int64_t>(std::ceil(min_x)), r.x),
-                  std::max<std::int64_t>(static_cast<std::int64_t>(std::ceil(min_y)), r.y),
-                  std::min<std::int64_t>(static_cast<std::int64_t>(std::floor(max_x)), std::int64_t{r.x} + r.width - 1),
-                  std::min<std::int64_t>(static_cast<std::int64_t>(std::floor(max_y)), std::int64_t{r.y} + r.height - 1)};
+    const Box box{
+        std::max<std::int64_t>(static_cast<std::int64_t>(std::ceil(min_x)), r.x),
+        std::max<std::int64_t>(static_cast<std::int64_t>(std::ceil(min_y)), r.y),
+        std::min<std::int64_t>(static_cast<std::int64_t>(std::floor(max_x)), std::int64_t{r.x} + r.width - 1),
+        std::min<std::int64_t>(static_cast<std::int64_t>(std::floor(max_y)), std::int64_t{r.y} + r.height - 1)};
     if (box.x0 > box.x1 || box.y0 > box.y1) return std::nullopt;
     return box;
 }

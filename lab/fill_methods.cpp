@@ -2,8 +2,8 @@
 
 #include "fill_kernels.hpp"
 
-#include <raster/rasterize/fill.hpp>
 #include <raster/image/subpixel.hpp>
+#include <raster/rasterize/fill.hpp>
 
 #include <array>
 

@@ -84,8 +84,8 @@ void scanline_float(std::span<const glm::dvec2> corners, Coverage& target) {
     }
     const PixelRect& r = target.rect();
     const auto first = std::max<std::int64_t>(static_cast<std::int64_t>(std::ceil(min_y)), r.y);
-    const auto last = std::min<std::int64_t>(static_cast<std::int64_t>(std::ceil(max_y)) - 1,
-                                             std::int64_t{r.y} + r.height - 1);
+    const auto last =
+        std::min<std::int64_t>(static_cast<std::int64_t>(std::ceil(max_y)) - 1, std::int64_t{r.y} + r.height - 1);
     for (std::int64_t y = first; y <= last; ++y) {
         const double row = static_cast<double>(y);
         double left = std::numeric_limits<double>::max(), right = -left;

@@ -10,8 +10,8 @@
 #include <cstdint>
 #include <cstdlib>
 #include <optional>
-#include <fuzzer/FuzzedDataProvider.h>
 #include <stdexcept>
+#include <fuzzer/FuzzedDataProvider.h>
 
 namespace {
 
@@ -22,7 +22,8 @@ float any_float(FuzzedDataProvider& input) {
     switch (input.ConsumeIntegralInRange(0, 7)) {
     case 0: return input.ConsumeFloatingPoint<float>();
     case 1: return std::numeric_limits<float>::quiet_NaN();
-    case 2: return input.ConsumeBool() ? std::numeric_limits<float>::infinity() : -std::numeric_limits<float>::infinity();
+    case 2:
+        return input.ConsumeBool() ? std::numeric_limits<float>::infinity() : -std::numeric_limits<float>::infinity();
     default: return input.ConsumeFloatingPointInRange(-1.5F, 1.5F);
     }
 }
@@ -41,7 +42,9 @@ raster::Mesh soup(FuzzedDataProvider& input) {
     }
     const int facets = input.ConsumeIntegralInRange(0, 16);
     for (int i = 0; i < facets; ++i) {
-        const auto corner = [&] { return input.ConsumeIntegralInRange<std::uint32_t>(0, static_cast<std::uint32_t>(vertices - 1)); };
+        const auto corner = [&] {
+            return input.ConsumeIntegralInRange<std::uint32_t>(0, static_cast<std::uint32_t>(vertices - 1));
+        };
         const std::uint32_t a = corner(), b = corner(), c = corner();
         mesh.facets.push_back({{a, b, c}, any_vector(input)});
     }
@@ -57,7 +60,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     raster::Scene scene{raster::OrthoCamera(kWidth, kHeight), {1, 2, 3}, {}, {}, {}};
     if (input.ConsumeBool()) {
         try {
-            scene.camera = raster::OrthoCamera::look_at(kWidth, kHeight, any_vector(input), any_vector(input), any_vector(input));
+            scene.camera =
+                raster::OrthoCamera::look_at(kWidth, kHeight, any_vector(input), any_vector(input), any_vector(input));
         } catch (const std::invalid_argument&) {
             return 0;  // a camera refused with a clear error is a fine outcome
         }
@@ -77,8 +81,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         for (int k = 0; k < 12 && input.ConsumeBool(); ++k) model[k / 3][k % 3] = any_float(input);
         raster::SurfaceMaterial material;
         if (input.ConsumeBool()) {
-            raster::IntensityMaterial phase1{{input.ConsumeIntegral<std::uint8_t>(), input.ConsumeIntegral<std::uint8_t>(), 200},
-                                    any_float(input), any_float(input), {}};
+            raster::IntensityMaterial phase1{
+                {input.ConsumeIntegral<std::uint8_t>(), input.ConsumeIntegral<std::uint8_t>(), 200},
+                any_float(input),
+                any_float(input),
+                {}};
             if (input.ConsumeBool()) phase1.shininess = any_float(input);
             material = phase1;
         } else {
@@ -106,16 +113,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             const double pitch = any_float(input), yaw = any_float(input);
             const raster::PerspectiveCamera::Lens lens{any_float(input) * 100.0, input.ConsumeFloatingPoint<double>(),
                                                        input.ConsumeFloatingPoint<double>()};
-            pinhole = raster::PerspectiveScene{raster::PerspectiveCamera::first_person(kWidth, kHeight, eye, pitch, yaw, lens),
-                                               scene.background, scene.lights, scene.point_lights, scene.objects};
+            pinhole = raster::PerspectiveScene{
+                raster::PerspectiveCamera::first_person(kWidth, kHeight, eye, pitch, yaw, lens), scene.background,
+                scene.lights, scene.point_lights, scene.objects};
         }
     } catch (const std::invalid_argument&) {
         return 0;  // a camera refused with a clear error is a fine outcome
     }
     // Now and then more samples: multisampling's own coverage, depth and resolve.
-    const int samples = input.ConsumeBool() ? raster::kSampleCounts[static_cast<std::size_t>(input.ConsumeIntegralInRange(1, 4))] : 1;
+    const int samples =
+        input.ConsumeBool() ? raster::kSampleCounts[static_cast<std::size_t>(input.ConsumeIntegralInRange(1, 4))] : 1;
     const auto draw = [&](raster::Framebuffer& image) {
-        return pinhole ? raster::render(image, *pinhole, depth, {.samples = samples}) : raster::render(image, scene, depth, {.samples = samples});
+        return pinhole ? raster::render(image, *pinhole, depth, {.samples = samples})
+                       : raster::render(image, scene, depth, {.samples = samples});
     };
     const std::size_t drawn = draw(first);
     // Deterministic: the same scene draws the same pixels again, into a buffer that held others.

@@ -1,9 +1,9 @@
 // libFuzzer target: the model and texture loading path. Bytes become OBJ and MTL text (read by
 // parse_obj, then framed and drawn) or an image (decoded, then sampled with every filter). Bad
 // input may only ever be a std::runtime_error; nothing may crash, hang or overrun a buffer.
-#include <raster/render/model_scene.hpp>
 #include <raster/io/obj_file.hpp>
 #include <raster/io/texture_file.hpp>
+#include <raster/render/model_scene.hpp>
 
 #include <cmath>
 #include <cstdint>
@@ -31,9 +31,11 @@ void draw(const std::shared_ptr<const raster::Model>& model, raster::ShadingMeth
 }
 
 void sample_everywhere(const raster::Texture& texture) {
-    for (const raster::TextureFilter filter : {raster::TextureFilter::nearest, raster::TextureFilter::bilinear, raster::TextureFilter::trilinear}) {
+    for (const raster::TextureFilter filter :
+         {raster::TextureFilter::nearest, raster::TextureFilter::bilinear, raster::TextureFilter::trilinear}) {
         for (const float u : {-1.5F, 0.0F, 0.3F, 1.0F, 7.25F}) {
-            const raster::LinearRgb c = texture.sample({u, 1.0F - u}, {{0.1F, 0.0F}, {0.0F, 0.3F}}, {filter, raster::TextureWrap::repeat});
+            const raster::LinearRgb c =
+                texture.sample({u, 1.0F - u}, {{0.1F, 0.0F}, {0.0F, 0.3F}}, {filter, raster::TextureWrap::repeat});
             if (!std::isfinite(c.r) || !std::isfinite(c.g) || !std::isfinite(c.b)) std::abort();
         }
     }

@@ -8,8 +8,8 @@
 
 #include <cstdint>
 #include <cstdlib>
-#include <fuzzer/FuzzedDataProvider.h>
 #include <vector>
+#include <fuzzer/FuzzedDataProvider.h>
 
 namespace {
 
@@ -27,7 +27,8 @@ void check_fill(FuzzedDataProvider& input) {
         const std::int32_t x = coordinate();
         corners.push_back({x, coordinate()});
     }
-    const raster::PixelRect clip{input.ConsumeIntegralInRange(-4, 4), input.ConsumeIntegralInRange(-4, 4), kSide, kSide};
+    const raster::PixelRect clip{input.ConsumeIntegralInRange(-4, 4), input.ConsumeIntegralInRange(-4, 4), kSide,
+                                 kSide};
     lab::Coverage actual(clip);
     raster::rasterize_convex(corners, clip, [&](raster::Span span) {
         if (span.y < clip.y || span.y >= clip.y + clip.height || span.x_begin < clip.x ||
@@ -82,7 +83,9 @@ void check_line(FuzzedDataProvider& input) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     FuzzedDataProvider input(data, size);
-    if (input.ConsumeBool()) check_fill(input);
-    else check_line(input);
+    if (input.ConsumeBool())
+        check_fill(input);
+    else
+        check_line(input);
     return 0;
 }

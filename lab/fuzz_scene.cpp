@@ -21,10 +21,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     static constexpr std::array<const char*, 4> kFormats{".stl", ".stl", ".ply", ".gltf"};
     const std::span<const std::uint8_t> rest(data + 1, size - 1);
     std::string ending = kFormats[data[0] % kFormats.size()];
-    if (ending == ".gltf" && rest.size() >= 4 && std::string_view(reinterpret_cast<const char*>(rest.data()), 4) == "glTF") ending = ".glb";
+    if (ending == ".gltf" && rest.size() >= 4 &&
+        std::string_view(reinterpret_cast<const char*>(rest.data()), 4) == "glTF")
+        ending = ".glb";
     // One file per fuzzing process, named by its id: the reader is given a path as render gives it.
-    const std::filesystem::path path = std::filesystem::temp_directory_path() / ("raster-fuzz-scene-" + std::to_string(::getpid()) + ending);
-    std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(rest.data()), static_cast<std::streamsize>(rest.size()));
+    const std::filesystem::path path =
+        std::filesystem::temp_directory_path() / ("raster-fuzz-scene-" + std::to_string(::getpid()) + ending);
+    std::ofstream(path, std::ios::binary)
+        .write(reinterpret_cast<const char*>(rest.data()), static_cast<std::streamsize>(rest.size()));
     try {
         raster::ObjOptions options;
         options.load_textures = false;

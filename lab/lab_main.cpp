@@ -24,8 +24,8 @@ struct Row {
     std::string id;
     std::string label;
     bool is_product = false;
-    double speed = 0.0;  // million pixels per second on the tumbling-cube scene: the chart's speed axis
-    double error = 0.0;  // mismatches per million reference pixels: the chart's error axis
+    double speed = 0.0;                // million pixels per second on the tumbling-cube scene: the chart's speed axis
+    double error = 0.0;                // mismatches per million reference pixels: the chart's error axis
     std::vector<std::string> details;  // further columns of the summary table
     bool pareto = false;
 };
@@ -68,11 +68,13 @@ void rank(std::vector<Row>& rows) {
 void write_chart_tables(const fs::path& directory, const std::string& name, const std::vector<Row>& rows) {
     std::ofstream all(directory / (name + ".csv"));
     std::ofstream front(directory / (name + "-pareto.csv"));
-    for (std::ofstream* out : {&all, &front}) *out << "method,label,product,mpixels_per_s,mismatches_per_million,pareto\n";
+    for (std::ofstream* out : {&all, &front})
+        *out << "method,label,product,mpixels_per_s,mismatches_per_million,pareto\n";
     for (const Row& m : rows) {
         for (std::ofstream* out : {&all, &front}) {
             if (out == &front && !m.pareto) continue;
-            *out << m.id << "," << m.label << "," << m.is_product << "," << m.speed << "," << m.error << "," << m.pareto << "\n";
+            *out << m.id << "," << m.label << "," << m.is_product << "," << m.speed << "," << m.error << "," << m.pareto
+                 << "\n";
         }
     }
 }
@@ -133,11 +135,14 @@ std::vector<Row> measure_fills(const fs::path& out, const std::vector<lab::Speed
         double motion = 0.0;
         for (const std::int64_t offset : lab::kOffsets) motion = std::max(motion, lab::measure_motion(method, offset));
         const double ppm = 1e6 * static_cast<double>(total.mismatches) / static_cast<double>(total.reference_pixels);
-        rows.push_back({std::string(method.id), std::string(method.label), method.is_product,
-                        scene_mpixels(speeds, method.id), ppm,
-                        {fixed(geometric_mean_mpixels(speeds, method.id), 1), std::to_string(total.cracks),
-                         std::to_string(total.double_hits),
-                         std::isfinite(motion) ? fixed(motion, 3) : "lost the triangle"}});
+        rows.push_back(
+            {std::string(method.id),
+             std::string(method.label),
+             method.is_product,
+             scene_mpixels(speeds, method.id),
+             ppm,
+             {fixed(geometric_mean_mpixels(speeds, method.id), 1), std::to_string(total.cracks),
+              std::to_string(total.double_hits), std::isfinite(motion) ? fixed(motion, 3) : "lost the triangle"}});
     }
     rank(rows);
     write_chart_tables(out, "fill", rows);
@@ -146,7 +151,8 @@ std::vector<Row> measure_fills(const fs::path& out, const std::vector<lab::Speed
 
 std::vector<Row> measure_lines(const fs::path& out, const std::vector<lab::SpeedResult>& speeds) {
     std::ofstream table(out / "line-accuracy.csv");
-    table << "method,case,reference_pixels,mismatches,max_distance,outside_3x3,count_difference,max_count_difference,steps\n";
+    table
+        << "method,case,reference_pixels,mismatches,max_distance,outside_3x3,count_difference,max_count_difference,steps\n";
     std::vector<Row> rows;
     for (const lab::LineMethod& method : lab::line_methods()) {
         std::int64_t reference = 0, mismatches = 0, outside = 0, count_difference = 0;
@@ -163,9 +169,13 @@ std::vector<Row> measure_lines(const fs::path& out, const std::vector<lab::Speed
             distance = std::max(distance, a.max_distance);
         }
         const double ppm = 1e6 * static_cast<double>(mismatches) / static_cast<double>(reference);
-        rows.push_back({std::string(method.id), std::string(method.label), method.is_product,
-                        scene_mpixels(speeds, method.id), ppm,
-                        {fixed(geometric_mean_mpixels(speeds, method.id), 1), fixed(distance, 3), std::to_string(outside), std::to_string(count_difference)}});
+        rows.push_back({std::string(method.id),
+                        std::string(method.label),
+                        method.is_product,
+                        scene_mpixels(speeds, method.id),
+                        ppm,
+                        {fixed(geometric_mean_mpixels(speeds, method.id), 1), fixed(distance, 3),
+                         std::to_string(outside), std::to_string(count_difference)}});
     }
     rank(rows);
     write_chart_tables(out, "line", rows);
@@ -187,8 +197,10 @@ int main(int argc, char** argv) {
     fs::path out = "doc/lab";
     std::vector<char*> passed{argv[0]};
     for (int i = 1; i < argc; ++i) {
-        if (std::strncmp(argv[i], "--out=", 6) == 0) out = argv[i] + 6;
-        else passed.push_back(argv[i]);
+        if (std::strncmp(argv[i], "--out=", 6) == 0)
+            out = argv[i] + 6;
+        else
+            passed.push_back(argv[i]);
     }
     fs::create_directories(out);
     int passed_count = static_cast<int>(passed.size());
@@ -197,7 +209,8 @@ int main(int argc, char** argv) {
         std::ofstream table(out / "speed.csv");
         table << "method,size,primitives_per_s,mpixels_per_s\n";
         for (const lab::SpeedResult& s : speeds) {
-            table << s.method << "," << s.size << "," << s.primitives_per_second << "," << s.pixels_per_second / 1e6 << "\n";
+            table << s.method << "," << s.size << "," << s.primitives_per_second << "," << s.pixels_per_second / 1e6
+                  << "\n";
         }
     }
     const std::vector<Row> fills = measure_fills(out, speeds);
@@ -209,13 +222,16 @@ int main(int argc, char** argv) {
                "Pareto front is measured on the product's own scene, the front faces (fills) or culled edges "
                "(lines) of all 360 tumbling-cube frames at 800x600. Every figure comes from the CSV tables "
                "beside this file.\n\n## Convex fills\n\n";
-    write_markdown_table(summary, {"Mpixels/s, geometric mean over sizes", "cracks", "double hits",
-                                   "motion: worst centroid error (px)"}, fills);
+    write_markdown_table(
+        summary, {"Mpixels/s, geometric mean over sizes", "cracks", "double hits", "motion: worst centroid error (px)"},
+        fills);
     summary << "\nMillion pixels per second by triangle size (px):\n\n";
     write_speed_table(summary, speeds, fills, lab::kTriangleSizes, "size");
     summary << "\n## Lines\n\n";
-    write_markdown_table(summary, {"Mpixels/s, geometric mean over lengths", "farthest pixel from the segment (px)", "pixels outside the reference's 3x3",
-                                   "worst pixel-count difference"}, lines);
+    write_markdown_table(summary,
+                         {"Mpixels/s, geometric mean over lengths", "farthest pixel from the segment (px)",
+                          "pixels outside the reference's 3x3", "worst pixel-count difference"},
+                         lines);
     summary << "\nMillion pixels per second by segment length (px):\n\n";
     write_speed_table(summary, speeds, lines, lab::kLineLengths, "length");
     std::cout << "raster-lab: wrote " << (out / "summary.md").string() << " and its CSV tables\n";

@@ -36,8 +36,14 @@ std::int64_t bresenham(raster::Framebuffer& target, glm::ivec2 origin, glm::ivec
         target.set_pixel(static_cast<int>(x - origin.x), static_cast<int>(y - origin.y), kInk);
         if (x == to.x && y == to.y) return steps;
         const std::int64_t twice = 2 * error;
-        if (twice >= dy) { error += dy; x += sx; }
-        if (twice <= dx) { error += dx; y += sy; }
+        if (twice >= dy) {
+            error += dy;
+            x += sx;
+        }
+        if (twice <= dx) {
+            error += dx;
+            y += sy;
+        }
     }
 }
 

@@ -125,7 +125,9 @@ LineAccuracy measure_segments(const LineMethod& method, const SegmentCorpus& cor
             expected_count += ideal;
             result.mismatches += lit != ideal;
             if (!lit) return;
-            result.max_distance = std::max(result.max_distance, distance_to_segment(glm::dvec2(static_cast<double>(x), static_cast<double>(y)), glm::dvec2(from), glm::dvec2(to)));
+            result.max_distance = std::max(
+                result.max_distance, distance_to_segment(glm::dvec2(static_cast<double>(x), static_cast<double>(y)),
+                                                         glm::dvec2(from), glm::dvec2(to)));
             const bool near = covered_around(expected, x, y) > 0;
             // A neighbour outside the window may be the reference pixel; only judge inner pixels.
             const bool inner = x > w.x && y > w.y && x < w.x + w.width - 1 && y < w.y + w.height - 1;

@@ -20,11 +20,11 @@ struct FillAccuracy {
 struct LineAccuracy {
     std::int64_t reference_pixels = 0;
     std::int64_t mismatches = 0;
-    double max_distance = 0.0;           // farthest drawn pixel centre from the ideal segment
+    double max_distance = 0.0;               // farthest drawn pixel centre from the ideal segment
     std::int64_t outside_neighbourhood = 0;  // drawn pixels not within one pixel of the reference set
-    std::int64_t count_difference = 0;   // sum over segments of |drawn - reference|
+    std::int64_t count_difference = 0;       // sum over segments of |drawn - reference|
     std::int64_t max_count_difference = 0;
-    std::int64_t steps = 0;              // samples the method stepped through
+    std::int64_t steps = 0;  // samples the method stepped through
 };
 
 [[nodiscard]] FillAccuracy measure_polygons(const FillMethod& method, const PolygonCorpus& corpus);

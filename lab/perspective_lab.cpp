@@ -11,19 +11,19 @@
 #include "rasterize/setup_perspective.hpp"
 #include "recording_shader.hpp"
 
-#include <raster/scenes/diary_scenes.hpp>
-#include <raster/render/scene.hpp>
 #include <raster/geometry/shapes.hpp>
+#include <raster/render/scene.hpp>
+#include <raster/scenes/diary_scenes.hpp>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <optional>
 #include <fstream>
 #include <iostream>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -45,7 +45,8 @@ raster::Mesh floor_grid(int n) {
     const float x0 = -20.0F, x1 = 20.0F, z0 = 0.5F, z1 = 40.0F;
     for (int j = 0; j <= n; ++j) {
         for (int i = 0; i <= n; ++i) {
-            const float u = static_cast<float>(i) / static_cast<float>(n), v = static_cast<float>(j) / static_cast<float>(n);
+            const float u = static_cast<float>(i) / static_cast<float>(n),
+                        v = static_cast<float>(j) / static_cast<float>(n);
             mesh.positions.emplace_back(x0 + (x1 - x0) * u, -1.0F, z0 + (z1 - z0) * v);
             mesh.normals.emplace_back(0.0F, 1.0F, 0.0F);
         }
@@ -73,7 +74,8 @@ struct Checkerboard {
     static constexpr bool kFacetNormal = false;
     [[nodiscard]] Varying vertex(const raster::Corner& corner) const noexcept { return corner.position; }
     [[nodiscard]] raster::Rgb pixel(const glm::vec3& world) const noexcept {
-        const bool dark = (static_cast<int>(std::floor(world.x * 8)) + static_cast<int>(std::floor(world.z * 8))) % 2 == 0;
+        const bool dark =
+            (static_cast<int>(std::floor(world.x * 8)) + static_cast<int>(std::floor(world.z * 8))) % 2 == 0;
         return dark ? raster::Rgb{40, 40, 40} : raster::Rgb{220, 220, 220};
     }
 };
@@ -93,17 +95,23 @@ std::optional<glm::dvec2> floor_at_point(const raster::PerspectiveCamera& camera
     return glm::dvec2(ray.x * s, ray.z * s);
 }
 
-std::optional<glm::dvec2> floor_at(const raster::PerspectiveCamera& camera, int i, int j) { return floor_at_point(camera, i + 0.5, j + 0.5); }
+std::optional<glm::dvec2> floor_at(const raster::PerspectiveCamera& camera, int i, int j) {
+    return floor_at_point(camera, i + 0.5, j + 0.5);
+}
 
 // The mip level a filter would choose at pixel (i, j) from texture coordinate changes per pixel
 // step dx and dy (world units): log2 of the longer, in texels.
-double mip_level(glm::dvec2 dx, glm::dvec2 dy) { return std::log2(std::max(glm::length(dx), glm::length(dy)) * kTexelsPerUnit); }
+double mip_level(glm::dvec2 dx, glm::dvec2 dy) {
+    return std::log2(std::max(glm::length(dx), glm::length(dy)) * kTexelsPerUnit);
+}
 
 // The exact mip level at pixel (i, j), from central differences of the ray-cast floor point.
 std::optional<double> exact_mip_level(const raster::PerspectiveCamera& camera, int i, int j) {
     constexpr double h = 1e-3;
-    const auto left = floor_at_point(camera, i + 0.5 - h, j + 0.5), right = floor_at_point(camera, i + 0.5 + h, j + 0.5);
-    const auto above = floor_at_point(camera, i + 0.5, j + 0.5 - h), below = floor_at_point(camera, i + 0.5, j + 0.5 + h);
+    const auto left = floor_at_point(camera, i + 0.5 - h, j + 0.5),
+               right = floor_at_point(camera, i + 0.5 + h, j + 0.5);
+    const auto above = floor_at_point(camera, i + 0.5, j + 0.5 - h),
+               below = floor_at_point(camera, i + 0.5, j + 0.5 + h);
     if (!left || !right || !above || !below) return std::nullopt;
     return mip_level((*right - *left) / (2 * h), (*below - *above) / (2 * h));
 }
@@ -128,7 +136,7 @@ struct InterpolationRow {
     int cells;
     double degrees;
     double worst_texels, mean_texels, ms;
-    double worst_levels = 0.0, mean_levels = 0.0;  // the mip level from the per-pixel derivatives
+    double worst_levels = 0.0, mean_levels = 0.0;            // the mip level from the per-pixel derivatives
     double worst_quad_levels = 0.0, mean_quad_levels = 0.0;  // from differences across 2 x 2 quads, as GPUs take it
 };
 
@@ -145,18 +153,23 @@ InterpolationRow measure_interpolation(raster::detail::Interpolation mode, int c
         using Shader = std::decay_t<decltype(shader)>;
         switch (mode) {
         case Interpolation::screen_linear:
-            return raster::detail::draw_facets_in_perspective<Shader, Interpolation::screen_linear>(image, nullptr, camera, mesh, shader);
+            return raster::detail::draw_facets_in_perspective<Shader, Interpolation::screen_linear>(
+                image, nullptr, camera, mesh, shader);
         case Interpolation::perspective:
-            return raster::detail::draw_facets_in_perspective<Shader, Interpolation::perspective>(image, nullptr, camera, mesh, shader);
+            return raster::detail::draw_facets_in_perspective<Shader, Interpolation::perspective>(image, nullptr,
+                                                                                                  camera, mesh, shader);
         case Interpolation::perspective_float:
-            return raster::detail::draw_facets_in_perspective<Shader, Interpolation::perspective_float>(image, nullptr, camera, mesh, shader);
+            return raster::detail::draw_facets_in_perspective<Shader, Interpolation::perspective_float>(
+                image, nullptr, camera, mesh, shader);
         }
         return std::size_t{0};
     };
     image.clear({255, 255, 255});
     std::vector<glm::vec3> per_x, per_y;
     draw(FootprintRecorder{&seen, &per_x, &per_y});
-    const char* const method = mode == Interpolation::screen_linear ? "affine" : mode == Interpolation::perspective ? "perspective" : "perspective in float";
+    const char* const method = mode == Interpolation::screen_linear ? "affine"
+                               : mode == Interpolation::perspective ? "perspective"
+                                                                    : "perspective in float";
     InterpolationRow row{method, cells, degrees, 0.0, 0.0, 0.0};
     // The point pixel (i, j) was shaded with, when the floor covers it.
     const auto seen_at = [&](int i, int j) -> std::optional<glm::dvec2> {
@@ -184,7 +197,8 @@ InterpolationRow measure_interpolation(raster::detail::Interpolation mode, int c
             ++levelled;
             // A GPU's level: the differences across the pixel's 2 x 2 quad, where all of it is covered.
             const int qi = i & ~1, qj = j & ~1;
-            const auto left = seen_at(qi, j), right = seen_at(qi + 1, j), top = seen_at(i, qj), bottom = seen_at(i, qj + 1);
+            const auto left = seen_at(qi, j), right = seen_at(qi + 1, j), top = seen_at(i, qj),
+                       bottom = seen_at(i, qj + 1);
             if (!left || !right || !top || !bottom) continue;
             const double quad_levels = std::abs(mip_level(*right - *left, *bottom - *top) - *exact);
             row.worst_quad_levels = std::max(row.worst_quad_levels, quad_levels);
@@ -224,7 +238,8 @@ ClippingRow measure_clipping(std::string_view name, int fov) {
             const raster::Mesh mesh = raster::posed(*object.mesh, object.model);
             const raster::LinearLighting lighting(std::get<raster::LinearMaterial>(object.material), scene.lights,
                                                   scene.point_lights, -scene.camera.direction(), scene.camera.eye());
-            raster::detail::draw_facets_in_perspective(image, &depth, scene.camera, mesh, raster::LinearPhongShader{&lighting}, band);
+            raster::detail::draw_facets_in_perspective(image, &depth, scene.camera, mesh,
+                                                       raster::LinearPhongShader{&lighting}, band);
         }
     };
     raster::Framebuffer six(kWidth, kHeight), guard(kWidth, kHeight);
@@ -258,8 +273,10 @@ const std::vector<DepthEncoding>& encodings() {
     static const std::vector<DepthEncoding> all{
         {"w as float (product)", [](double w, double, double) { return double{as_float(w)}; }},
         {"z/w as float", [](double w, double n, double f) { return double{as_float(f * (w - n) / ((f - n) * w))}; }},
-        {"reversed z/w as float", [](double w, double n, double f) { return -double{as_float(n * (f - w) / ((f - n) * w))}; }},
-        {"z/w in 24-bit fixed", [](double w, double n, double f) { return std::floor(f * (w - n) / ((f - n) * w) * 16777215.0 + 0.5); }},
+        {"reversed z/w as float",
+         [](double w, double n, double f) { return -double{as_float(n * (f - w) / ((f - n) * w))}; }},
+        {"z/w in 24-bit fixed",
+         [](double w, double n, double f) { return std::floor(f * (w - n) / ((f - n) * w) * 16777215.0 + 0.5); }},
         {"1/w as float", [](double w, double, double) { return -double{as_float(1.0 / w)}; }},
     };
     return all;
@@ -311,7 +328,8 @@ int main(int argc, char** argv) {
     std::vector<InterpolationRow> interpolation;
     for (const double degrees : {5.0, 20.0}) {
         using raster::detail::Interpolation;
-        for (const int cells : {1, 2, 4, 8, 16, 32, 64}) interpolation.push_back(measure_interpolation(Interpolation::screen_linear, cells, degrees));
+        for (const int cells : {1, 2, 4, 8, 16, 32, 64})
+            interpolation.push_back(measure_interpolation(Interpolation::screen_linear, cells, degrees));
         for (const Interpolation mode : {Interpolation::perspective, Interpolation::perspective_float}) {
             interpolation.push_back(measure_interpolation(mode, 1, degrees));
             interpolation.push_back(measure_interpolation(mode, 64, degrees));
@@ -320,7 +338,8 @@ int main(int argc, char** argv) {
     std::cerr << "perspective-lab: clipping\n";
     std::vector<ClippingRow> clipping;
     for (const int fov : {40, 90, 150}) {
-        for (const std::string_view name : {"point-light", "point-lights"}) clipping.push_back(measure_clipping(name, fov));
+        for (const std::string_view name : {"point-light", "point-lights"})
+            clipping.push_back(measure_clipping(name, fov));
     }
     std::cerr << "perspective-lab: depth\n";
     const std::vector<DepthRow> depth = measure_depth();
@@ -328,8 +347,9 @@ int main(int argc, char** argv) {
     std::ofstream csv(out / "interpolation.csv");
     csv << "method,cells,degrees,worst_texels,mean_texels,ms,worst_levels,mean_levels,worst_quad_levels,mean_quad_levels\n";
     for (const InterpolationRow& r : interpolation) {
-        csv << r.method << ',' << r.cells << ',' << r.degrees << ',' << r.worst_texels << ',' << r.mean_texels << ',' << r.ms << ','
-            << r.worst_levels << ',' << r.mean_levels << ',' << r.worst_quad_levels << ',' << r.mean_quad_levels << '\n';
+        csv << r.method << ',' << r.cells << ',' << r.degrees << ',' << r.worst_texels << ',' << r.mean_texels << ','
+            << r.ms << ',' << r.worst_levels << ',' << r.mean_levels << ',' << r.worst_quad_levels << ','
+            << r.mean_quad_levels << '\n';
     }
     std::ofstream depth_csv(out / "depth-perspective.csv");
     depth_csv << "ratio";
@@ -345,30 +365,35 @@ int main(int argc, char** argv) {
     }
 
     std::ofstream summary(out / "perspective-summary.md");
-    summary << "# Perspective summary\n\nWritten by `perspective-lab` (`tools/bootstrap.sh lab`), " << kWidth << " x " << kHeight
-            << ".\n\n## Interpolation\n\nA floor 40 x 39.5 units (y = -1) seen from 1 above, looking 5 or 20 degrees down, "
-            << "60-degree field of view; texture coordinates are world x and z at 256 texels per unit. Error: distance "
-            << "between the coordinates a pixel is shaded with and where its line of sight meets the floor; mip levels: "
-            << "how far the level chosen from the coordinates' change per pixel (log2 of the longer step, in texels) is "
-            << "from the exact one (central differences of the ray cast), for the product's analytic derivatives and for "
-            << "a GPU's differences across 2 x 2 quads of the shaded points. Time: median of 31 frames with a checkerboard "
-            << "shader.\n\n| method | cells | looking down | worst (texels) | mean (texels) | worst (mip levels) | mean (mip levels) "
-            << "| quads: worst (mip levels) | quads: mean (mip levels) | ms |\n|---|---|---|---|---|---|---|---|---|---|\n";
+    summary
+        << "# Perspective summary\n\nWritten by `perspective-lab` (`tools/bootstrap.sh lab`), " << kWidth << " x "
+        << kHeight
+        << ".\n\n## Interpolation\n\nA floor 40 x 39.5 units (y = -1) seen from 1 above, looking 5 or 20 degrees down, "
+        << "60-degree field of view; texture coordinates are world x and z at 256 texels per unit. Error: distance "
+        << "between the coordinates a pixel is shaded with and where its line of sight meets the floor; mip levels: "
+        << "how far the level chosen from the coordinates' change per pixel (log2 of the longer step, in texels) is "
+        << "from the exact one (central differences of the ray cast), for the product's analytic derivatives and for "
+        << "a GPU's differences across 2 x 2 quads of the shaded points. Time: median of 31 frames with a checkerboard "
+        << "shader.\n\n| method | cells | looking down | worst (texels) | mean (texels) | worst (mip levels) | mean (mip levels) "
+        << "| quads: worst (mip levels) | quads: mean (mip levels) | ms |\n|---|---|---|---|---|---|---|---|---|---|\n";
     for (const InterpolationRow& r : interpolation) {
         summary << "| " << r.method << " | " << r.cells << " x " << r.cells << " | " << r.degrees << " deg | "
-                << number(r.worst_texels, "%.3f") << " | " << number(r.mean_texels, "%.3f") << " | " << number(r.worst_levels, "%.4f")
-                << " | " << number(r.mean_levels, "%.5f") << " | " << number(r.worst_quad_levels, "%.4f") << " | "
-                << number(r.mean_quad_levels, "%.5f") << " | " << number(r.ms, "%.2f") << " |\n";
+                << number(r.worst_texels, "%.3f") << " | " << number(r.mean_texels, "%.3f") << " | "
+                << number(r.worst_levels, "%.4f") << " | " << number(r.mean_levels, "%.5f") << " | "
+                << number(r.worst_quad_levels, "%.4f") << " | " << number(r.mean_quad_levels, "%.5f") << " | "
+                << number(r.ms, "%.2f") << " |\n";
     }
-    summary << "\n## Clipping\n\nThe scene's still through `--perspective FOV`, Phong-shaded, depth-tested; all six planes "
-            << "(x and y clipped at the image) against near and far with the guard band (product). Time: median of 31 "
-            << "interleaved frames.\n\n| scene | fov | pixels that differ | six planes (ms) | guard band (ms) |\n|---|---|---|---|---|\n";
+    summary
+        << "\n## Clipping\n\nThe scene's still through `--perspective FOV`, Phong-shaded, depth-tested; all six planes "
+        << "(x and y clipped at the image) against near and far with the guard band (product). Time: median of 31 "
+        << "interleaved frames.\n\n| scene | fov | pixels that differ | six planes (ms) | guard band (ms) |\n|---|---|---|---|---|\n";
     for (const ClippingRow& r : clipping) {
         summary << "| " << r.scene << " | " << r.fov << " | " << r.differing << " | " << number(r.six_plane_ms, "%.2f")
                 << " | " << number(r.guard_band_ms, "%.2f") << " |\n";
     }
-    summary << "\n## Depth\n\nTwo floors 1e-5 apart (relative), the nearer at y = -1, seen from the origin looking 10 degrees "
-            << "down, far = 1000; share of compared pixels where the encoding does not keep the nearer floor in front.\n\n| far / near |";
+    summary
+        << "\n## Depth\n\nTwo floors 1e-5 apart (relative), the nearer at y = -1, seen from the origin looking 10 degrees "
+        << "down, far = 1000; share of compared pixels where the encoding does not keep the nearer floor in front.\n\n| far / near |";
     for (const DepthEncoding& e : encodings()) summary << ' ' << e.name << " |";
     summary << "\n|---|";
     for (std::size_t e = 0; e < encodings().size(); ++e) summary << "---|";
@@ -377,10 +402,14 @@ int main(int argc, char** argv) {
         summary << "| " << number(depth[k].ratio, "%.0e") << " |";
         for (std::size_t e = 0; e < encodings().size(); ++e) {
             const DepthRow& r = depth[k + e];
-            summary << ' ' << number(100.0 * static_cast<double>(r.wrong) / static_cast<double>(std::max(r.compared, 1L)), "%.2f") << " % |";
+            summary << ' '
+                    << number(100.0 * static_cast<double>(r.wrong) / static_cast<double>(std::max(r.compared, 1L)),
+                              "%.2f")
+                    << " % |";
         }
         summary << '\n';
     }
-    std::cerr << "perspective-lab: wrote interpolation.csv, depth-perspective.csv and perspective-summary.md in " << out.string() << "\n";
+    std::cerr << "perspective-lab: wrote interpolation.csv, depth-perspective.csv and perspective-summary.md in "
+              << out.string() << "\n";
     return 0;
 }

@@ -20,7 +20,8 @@ struct RecordingShader {
     [[nodiscard]] raster::Rgb pixel(const glm::vec3& world) const noexcept {
         const auto index = static_cast<std::uint32_t>(seen->size());
         seen->push_back(world);
-        return {static_cast<std::uint8_t>(index >> 16), static_cast<std::uint8_t>(index >> 8), static_cast<std::uint8_t>(index)};
+        return {static_cast<std::uint8_t>(index >> 16), static_cast<std::uint8_t>(index >> 8),
+                static_cast<std::uint8_t>(index)};
     }
 };
 

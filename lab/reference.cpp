@@ -38,9 +38,11 @@ void reference_polygon(std::span<const ExactPoint> corners, Coverage& target) {
         min_y = std::min(min_y, p.y), max_y = std::max(max_y, p.y);
     }
     const auto first_i = std::max<std::int64_t>(rect.x, -static_cast<std::int64_t>(floor_div(-min_x, kExactOne)));
-    const auto last_i = std::min<std::int64_t>(std::int64_t{rect.x} + rect.width - 1, static_cast<std::int64_t>(floor_div(max_x, kExactOne)));
+    const auto last_i = std::min<std::int64_t>(std::int64_t{rect.x} + rect.width - 1,
+                                               static_cast<std::int64_t>(floor_div(max_x, kExactOne)));
     const auto first_j = std::max<std::int64_t>(rect.y, -static_cast<std::int64_t>(floor_div(-min_y, kExactOne)));
-    const auto last_j = std::min<std::int64_t>(std::int64_t{rect.y} + rect.height - 1, static_cast<std::int64_t>(floor_div(max_y, kExactOne)));
+    const auto last_j = std::min<std::int64_t>(std::int64_t{rect.y} + rect.height - 1,
+                                               static_cast<std::int64_t>(floor_div(max_y, kExactOne)));
     for (std::int64_t j = first_j; j <= last_j; ++j) {
         for (std::int64_t i = first_i; i <= last_i; ++i) {
             const Exact px = Exact{i} * kExactOne;

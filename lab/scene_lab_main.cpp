@@ -35,8 +35,10 @@ int main(int argc, char** argv) {
     int repetitions = 11;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
-        if (arg.rfind("--out=", 0) == 0) out = arg.substr(6);
-        else if (arg.rfind("--repetitions=", 0) == 0) repetitions = std::max(1, std::stoi(arg.substr(14)));
+        if (arg.rfind("--out=", 0) == 0)
+            out = arg.substr(6);
+        else if (arg.rfind("--repetitions=", 0) == 0)
+            repetitions = std::max(1, std::stoi(arg.substr(14)));
         else {
             std::cerr << "usage: scene-lab [--out=DIR] [--repetitions=N]\n";
             return 2;
@@ -53,23 +55,26 @@ int main(int argc, char** argv) {
            "pareto,diary,auto\n";
     for (const lab::ShadingRow& r : shading) {
         csv << r.shape << ',' << r.level << ',' << r.facets << ',' << r.method << ',' << r.silhouette_px << ','
-            << r.outline_mismatches << ',' << r.mean_error << ',' << r.max_error << ',' << r.estimate << ',' << r.ms << ','
-            << r.ms_low << ',' << r.ms_high << ',' << on_front(r, shading) << ',' << r.diary << ',' << r.automatic << '\n';
+            << r.outline_mismatches << ',' << r.mean_error << ',' << r.max_error << ',' << r.estimate << ',' << r.ms
+            << ',' << r.ms_low << ',' << r.ms_high << ',' << on_front(r, shading) << ',' << r.diary << ','
+            << r.automatic << '\n';
     }
     // The front, sorted by time per shape, for the chart's line.
     std::vector<lab::ShadingRow> front;
     for (const lab::ShadingRow& r : shading) {
         if (on_front(r, shading)) front.push_back(r);
     }
-    std::sort(front.begin(), front.end(), [](const auto& a, const auto& b) { return a.shape != b.shape ? a.shape < b.shape : a.ms < b.ms; });
+    std::sort(front.begin(), front.end(),
+              [](const auto& a, const auto& b) { return a.shape != b.shape ? a.shape < b.shape : a.ms < b.ms; });
     std::ofstream front_csv(out / "shading-pareto.csv");
     front_csv << "shape,level,method,ms,max_error\n";
-    for (const lab::ShadingRow& r : front) front_csv << r.shape << ',' << r.level << ',' << r.method << ',' << r.ms << ',' << r.max_error << '\n';
+    for (const lab::ShadingRow& r : front)
+        front_csv << r.shape << ',' << r.level << ',' << r.method << ',' << r.ms << ',' << r.max_error << '\n';
     std::ofstream depth_csv(out / "depth.csv");
     depth_csv << "scene,parameter,format,wrong_pixels,compared_pixels,ms\n";
     for (const lab::DepthRow& r : depth) {
-        depth_csv << r.scene << ',' << r.parameter << ',' << r.format << ',' << r.wrong_pixels << ',' << r.compared_pixels << ','
-                  << r.ms << '\n';
+        depth_csv << r.scene << ',' << r.parameter << ',' << r.format << ',' << r.wrong_pixels << ','
+                  << r.compared_pixels << ',' << r.ms << '\n';
     }
 
     std::ofstream summary(out / "scenes-summary.md");
@@ -77,23 +82,27 @@ int main(int argc, char** argv) {
             << " interleaved timings at 800 x 600. Errors are 8-bit levels against the ray-cast surface; "
                "the estimate is `shading_error_levels`, before rounding.\n";
     for (const std::string shape : {"sphere", "torus"}) {
-        summary << "\n## " << shape << "\n\n| level | facets | method | outline (px) | outline mismatches | mean error | max error | estimate | ms (range) | |\n"
-                << "|---|---|---|---|---|---|---|---|---|---|\n";
+        summary
+            << "\n## " << shape
+            << "\n\n| level | facets | method | outline (px) | outline mismatches | mean error | max error | estimate | ms (range) | |\n"
+            << "|---|---|---|---|---|---|---|---|---|---|\n";
         for (const lab::ShadingRow& r : shading) {
             if (r.shape != shape) continue;
             std::string mark = r.automatic ? "auto" : "";
             if (r.diary) mark += mark.empty() ? "diary" : ", diary";
             if (on_front(r, shading)) mark += mark.empty() ? "front" : ", front";
-            summary << "| " << r.level << " | " << r.facets << " | " << r.method << " | " << number(r.silhouette_px) << " | "
-                    << r.outline_mismatches << " | " << number(r.mean_error, "%.3f") << " | " << number(r.max_error, "%.0f")
-                    << " | " << number(r.estimate, "%.2f") << " | " << number(r.ms, "%.2f") << " ("
-                    << number(r.ms_low, "%.2f") << "-" << number(r.ms_high, "%.2f") << ") | " << mark << " |\n";
+            summary << "| " << r.level << " | " << r.facets << " | " << r.method << " | " << number(r.silhouette_px)
+                    << " | " << r.outline_mismatches << " | " << number(r.mean_error, "%.3f") << " | "
+                    << number(r.max_error, "%.0f") << " | " << number(r.estimate, "%.2f") << " | "
+                    << number(r.ms, "%.2f") << " (" << number(r.ms_low, "%.2f") << "-" << number(r.ms_high, "%.2f")
+                    << ") | " << mark << " |\n";
         }
     }
-    summary << "\n## depth formats\n\n| scene | parameter | format | wrong pixels | of | ms |\n|---|---|---|---|---|---|\n";
+    summary
+        << "\n## depth formats\n\n| scene | parameter | format | wrong pixels | of | ms |\n|---|---|---|---|---|---|\n";
     for (const lab::DepthRow& r : depth) {
-        summary << "| " << r.scene << " | " << number(r.parameter) << " | " << r.format << " | " << r.wrong_pixels << " | "
-                << r.compared_pixels << " | " << number(r.ms, "%.3f") << " |\n";
+        summary << "| " << r.scene << " | " << number(r.parameter) << " | " << r.format << " | " << r.wrong_pixels
+                << " | " << r.compared_pixels << " | " << number(r.ms, "%.3f") << " |\n";
     }
     std::cerr << "scene-lab: wrote " << (out / "shading.csv").string() << ", depth.csv and scenes-summary.md\n";
     return 0;

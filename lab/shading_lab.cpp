@@ -39,36 +39,56 @@ double median_of(std::vector<double> values) {
 
 std::vector<ShadingRow> measure_shading(int repetitions) {
     std::vector<Case> cases;
-    cases.push_back({"sphere", raster::ShapeKind::sphere, raster::DiaryScene("phong-sphere").still(kWidth, kHeight),
-                     {0, 1, 2, 3, 4, 5, 6, 7}, 4});
-    cases.push_back({"torus", raster::ShapeKind::torus, raster::DiaryScene("torus").still(kWidth, kHeight),
-                     {1, 2, 3, 4, 6, 8, 12, 16, 24}, 4});
+    cases.push_back({"sphere",
+                     raster::ShapeKind::sphere,
+                     raster::DiaryScene("phong-sphere").still(kWidth, kHeight),
+                     {0, 1, 2, 3, 4, 5, 6, 7},
+                     4});
+    cases.push_back({"torus",
+                     raster::ShapeKind::torus,
+                     raster::DiaryScene("torus").still(kWidth, kHeight),
+                     {1, 2, 3, 4, 6, 8, 12, 16, 24},
+                     4});
     std::vector<ShadingRow> rows;
     for (Case& c : cases) {
         c.scene.background = kNoSurface;
         const raster::SceneObject& object = c.scene.objects.front();
-        const std::vector<ExactObject> exact{{c.kind, object.model, std::get<raster::IntensityMaterial>(object.material)}};
+        const std::vector<ExactObject> exact{
+            {c.kind, object.model, std::get<raster::IntensityMaterial>(object.material)}};
         const ExactImage reference = ray_cast(c.scene.camera, kWidth, kHeight, exact, c.scene.lights, kNoSurface);
-        const raster::DetailChoice chosen =
-            raster::choose_detail(c.kind, object.model, c.scene.camera, std::get<raster::IntensityMaterial>(object.material), c.scene.lights);
-        const raster::IntensityLighting lighting(std::get<raster::IntensityMaterial>(object.material), c.scene.lights, -c.scene.camera.direction());
+        const raster::DetailChoice chosen = raster::choose_detail(
+            c.kind, object.model, c.scene.camera, std::get<raster::IntensityMaterial>(object.material), c.scene.lights);
+        const raster::IntensityLighting lighting(std::get<raster::IntensityMaterial>(object.material), c.scene.lights,
+                                                 -c.scene.camera.direction());
         const double stretch = c.scene.camera.scale() * raster::model_stretch(object.model).most;
         std::vector<raster::Scene> variants;
         for (const int level : c.levels) {
             const auto mesh = std::make_shared<const raster::Mesh>(raster::tessellate(c.kind, level));
             const raster::Mesh posed_mesh = raster::posed(*mesh, object.model);
             const double deviation = raster::surface_deviation(c.kind, *mesh) * stretch;
-            for (const raster::ShadingMethod method : {raster::ShadingMethod::flat, raster::ShadingMethod::gouraud, raster::ShadingMethod::phong}) {
+            for (const raster::ShadingMethod method :
+                 {raster::ShadingMethod::flat, raster::ShadingMethod::gouraud, raster::ShadingMethod::phong}) {
                 raster::Scene variant = c.scene;
                 variant.objects.front().mesh = mesh;
                 variant.objects.front().shading = method;
                 raster::Framebuffer image(kWidth, kHeight);
                 raster::DepthBuffer depth;
                 raster::render(image, variant, depth);
-                ShadingRow row{c.shape, level, mesh->facets.size(),
-                               method == raster::ShadingMethod::flat ? "flat" : method == raster::ShadingMethod::gouraud ? "gouraud" : "phong",
-                               deviation, 0, 0.0, 0.0,
-                               raster::shading_error_levels(c.kind, posed_mesh, object.model, c.scene.camera, method, lighting), 0.0, 0.0, 0.0};
+                ShadingRow row{
+                    c.shape,
+                    level,
+                    mesh->facets.size(),
+                    method == raster::ShadingMethod::flat      ? "flat"
+                    : method == raster::ShadingMethod::gouraud ? "gouraud"
+                                                               : "phong",
+                    deviation,
+                    0,
+                    0.0,
+                    0.0,
+                    raster::shading_error_levels(c.kind, posed_mesh, object.model, c.scene.camera, method, lighting),
+                    0.0,
+                    0.0,
+                    0.0};
                 std::int64_t both = 0;
                 double total = 0.0;
                 const auto covered_at = [&](int x, int y) {
@@ -78,7 +98,9 @@ std::vector<ShadingRow> measure_shading(int repetitions) {
                     return x >= 0 && y >= 0 && x < kWidth && y < kHeight &&
                            reference.covered[static_cast<std::size_t>(y * kWidth + x)] != 0;
                 };
-                const auto depth_at = [&](int x, int y) { return reference.depth[static_cast<std::size_t>(y * kWidth + x)]; };
+                const auto depth_at = [&](int x, int y) {
+                    return reference.depth[static_cast<std::size_t>(y * kWidth + x)];
+                };
                 for (int y = 0; y < kHeight; ++y) {
                     for (int x = 0; x < kWidth; ++x) {
                         const raster::Rgb mine = image.pixel(x, y);
@@ -94,8 +116,9 @@ std::vector<ShadingRow> measure_shading(int repetitions) {
                         }
                         if (!interior) continue;
                         const raster::Rgb exact_colour = reference.colour.pixel(x, y);
-                        const double error = std::max({std::abs(mine.r - exact_colour.r), std::abs(mine.g - exact_colour.g),
-                                                       std::abs(mine.b - exact_colour.b)});
+                        const double error =
+                            std::max({std::abs(mine.r - exact_colour.r), std::abs(mine.g - exact_colour.g),
+                                      std::abs(mine.b - exact_colour.b)});
                         total += error;
                         row.max_error = std::max(row.max_error, error);
                         ++both;

@@ -6,9 +6,9 @@
 #include <raster/rasterize/draw_cube.hpp>
 #include <raster/scenes/scenes.hpp>
 
-#include <benchmark/benchmark.h>
 #include <map>
 #include <memory>
+#include <benchmark/benchmark.h>
 
 namespace lab {
 namespace {
@@ -36,12 +36,12 @@ public:
     void ReportRuns(const std::vector<Run>& runs) override {
         ConsoleReporter::ReportRuns(runs);
         for (const Run& run : runs) {
-            const bool usable = run.run_type == Run::RT_Aggregate ? run.aggregate_name == "median"
-                                                                   : run.repetitions <= 1;
+            const bool usable =
+                run.run_type == Run::RT_Aggregate ? run.aggregate_name == "median" : run.repetitions <= 1;
             const auto named = names.find(run.run_name.str());
             if (!usable || named == names.end() || run.error_occurred) continue;
-            results.push_back({named->second.first, named->second.second,
-                               run.counters.at("primitives").value, run.counters.at("pixels").value});
+            results.push_back({named->second.first, named->second.second, run.counters.at("primitives").value,
+                               run.counters.at("pixels").value});
         }
     }
 };
@@ -122,14 +122,15 @@ void register_scene(Collector& collector) {
     for (const FillMethod& method : fill_methods()) {
         const std::string name = key("scene-fill", method.id, 0);
         collector.names[name] = {std::string(method.id), 0};
-        benchmark::RegisterBenchmark(name.c_str(), [&method, scene, face_pixels, frames, frame](benchmark::State& state) {
-            Coverage target(frame);
-            for (auto _ : state) {
-                for (const auto& corners : scene->faces) method.fill(corners, target);
-                benchmark::ClobberMemory();
-            }
-            report_rates(state, frames, face_pixels);
-        });
+        benchmark::RegisterBenchmark(name.c_str(),
+                                     [&method, scene, face_pixels, frames, frame](benchmark::State& state) {
+                                         Coverage target(frame);
+                                         for (auto _ : state) {
+                                             for (const auto& corners : scene->faces) method.fill(corners, target);
+                                             benchmark::ClobberMemory();
+                                         }
+                                         report_rates(state, frames, face_pixels);
+                                     });
     }
     for (const LineMethod& method : line_methods()) {
         const std::string name = key("scene-line", method.id, 0);

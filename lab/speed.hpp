@@ -11,9 +11,9 @@ namespace lab {
 
 struct SpeedResult {
     std::string method;
-    int size;                  // triangle size or line length in pixels; 0 for the tumbling-cube scene
+    int size;                      // triangle size or line length in pixels; 0 for the tumbling-cube scene
     double primitives_per_second;  // frames per second for the scene
-    double pixels_per_second;  // pixels the reference covers, per second
+    double pixels_per_second;      // pixels the reference covers, per second
 };
 
 inline constexpr int kTriangleSizes[] = {1, 4, 16, 64, 256, 500};

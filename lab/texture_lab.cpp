@@ -13,16 +13,16 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <optional>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace {
 
 constexpr int kWidth = 640, kHeight = 360, kBands = 12;
-constexpr int kSamples = 16;  // per side of a pixel: 256 rays each for the reference
+constexpr int kSamples = 16;                   // per side of a pixel: 256 rays each for the reference
 constexpr double kFov = 60.0, kPitch = -0.12;  // radians: a little below the horizon
 constexpr float kFar = 2000.0F;
 constexpr int kSquareTexels = 32;  // texels per checker square; the texture holds 2 x 2 squares
@@ -44,13 +44,15 @@ raster::Texture checker_texture() {
     raster::Framebuffer image(2 * kSquareTexels, 2 * kSquareTexels);
     const raster::Rgb light = raster::srgb_from_linear(kLight), dark = raster::srgb_from_linear(kDark);
     for (int y = 0; y < image.height(); ++y) {
-        for (int x = 0; x < image.width(); ++x) image.set_pixel(x, y, ((x / kSquareTexels + y / kSquareTexels) % 2 == 0) ? light : dark);
+        for (int x = 0; x < image.width(); ++x)
+            image.set_pixel(x, y, ((x / kSquareTexels + y / kSquareTexels) % 2 == 0) ? light : dark);
     }
     return raster::Texture(image);
 }
 
 raster::PerspectiveCamera camera() {
-    return raster::PerspectiveCamera::first_person(kWidth, kHeight, {0.0F, 1.0F, 0.0F}, kPitch, 0.0, {kFov, 0.01, 4000.0});
+    return raster::PerspectiveCamera::first_person(kWidth, kHeight, {0.0F, 1.0F, 0.0F}, kPitch, 0.0,
+                                                   {kFov, 0.01, 4000.0});
 }
 
 // The exact picture: each pixel the mean, in linear light, of kSamples^2 rays meeting the floor,
@@ -60,7 +62,8 @@ raster::Framebuffer reference() {
     const raster::Sampler exact{raster::TextureFilter::nearest, raster::TextureWrap::repeat};
     raster::Framebuffer image(kWidth, kHeight);
     const double t = std::tan(kFov * 3.14159265358979 / 360.0), aspect = static_cast<double>(kWidth) / kHeight;
-    const glm::dvec3 forward(0.0, std::sin(kPitch), std::cos(kPitch)), up(0.0, std::cos(kPitch), -std::sin(kPitch)), right(1, 0, 0);
+    const glm::dvec3 forward(0.0, std::sin(kPitch), std::cos(kPitch)), up(0.0, std::cos(kPitch), -std::sin(kPitch)),
+        right(1, 0, 0);
     for (int y = 0; y < kHeight; ++y) {
         for (int x = 0; x < kWidth; ++x) {
             raster::LinearRgb sum;
@@ -114,7 +117,9 @@ Row measure(const std::string& name, raster::TextureFilter filter, const raster:
             total += d;
         }
     }
-    for (int k = 0; k < kBands; ++k) row.band_rms[static_cast<std::size_t>(k)] = std::sqrt(row.band_rms[static_cast<std::size_t>(k)] / counts[static_cast<std::size_t>(k)]);
+    for (int k = 0; k < kBands; ++k)
+        row.band_rms[static_cast<std::size_t>(k)] =
+            std::sqrt(row.band_rms[static_cast<std::size_t>(k)] / counts[static_cast<std::size_t>(k)]);
     row.rms = std::sqrt(total / (kWidth * kHeight));
     return row;
 }
@@ -129,8 +134,9 @@ int main(int argc, char** argv) {
     std::cerr << "texture-lab: reference (" << kSamples * kSamples << " rays a pixel)\n";
     const raster::Framebuffer truth = reference();
     std::vector<Row> rows;
-    for (const auto& [name, filter] : {std::pair{"nearest", raster::TextureFilter::nearest}, std::pair{"bilinear", raster::TextureFilter::bilinear},
-                                       std::pair{"trilinear", raster::TextureFilter::trilinear}}) {
+    for (const auto& [name, filter] :
+         {std::pair{"nearest", raster::TextureFilter::nearest}, std::pair{"bilinear", raster::TextureFilter::bilinear},
+          std::pair{"trilinear", raster::TextureFilter::trilinear}}) {
         rows.push_back(measure(name, filter, truth));
     }
     std::ofstream csv(out / "texture-filtering.csv");
@@ -143,7 +149,8 @@ int main(int argc, char** argv) {
         csv << '\n';
     }
     std::ofstream summary(out / "texture-summary.md");
-    summary << "| filter | RMS error, sRGB levels | worst band | ms per " << kWidth << " x " << kHeight << " frame (median of 15) |\n|---|---|---|---|\n";
+    summary << "| filter | RMS error, sRGB levels | worst band | ms per " << kWidth << " x " << kHeight
+            << " frame (median of 15) |\n|---|---|---|---|\n";
     for (const Row& r : rows) {
         char line[160];
         std::snprintf(line, sizeof line, "| %s | %.2f | %.2f | %.2f |\n", r.filter.c_str(), r.rms,

@@ -16,13 +16,16 @@ namespace {
 glm::dmat4 matrix_of(const aiMatrix4x4& m) {
     glm::dmat4 out(1.0);
     for (unsigned row = 0; row < 4; ++row) {
-        for (unsigned column = 0; column < 4; ++column) out[static_cast<int>(column)][static_cast<int>(row)] = m[row][column];
+        for (unsigned column = 0; column < 4; ++column)
+            out[static_cast<int>(column)][static_cast<int>(row)] = m[row][column];
     }
     return out;
 }
 
-void walk_assimp(const aiScene& scene, const aiNode& node, const glm::dmat4& parent, int depth, Reading& r, std::set<unsigned>& used) {
-    if (depth > kMaxNodeDepth) throw WalkError("nodes nest more than " + std::to_string(kMaxNodeDepth) + " deep (or loop)");
+void walk_assimp(const aiScene& scene, const aiNode& node, const glm::dmat4& parent, int depth, Reading& r,
+                 std::set<unsigned>& used) {
+    if (depth > kMaxNodeDepth)
+        throw WalkError("nodes nest more than " + std::to_string(kMaxNodeDepth) + " deep (or loop)");
     const glm::dmat4 world = parent * matrix_of(node.mTransformation);
     for (unsigned i = 0; i < node.mNumMeshes; ++i) {
         if (node.mMeshes[i] >= scene.mNumMeshes) throw WalkError("a node names a mesh the scene lacks");
@@ -53,7 +56,8 @@ Reading by_assimp(const fs::path& path) {
     Assimp::Importer importer;
     // The product's flags (src/io/assimp/scene_file.cpp): validation only, no triangulation or merging.
     const aiScene* scene = importer.ReadFile(path.string(), aiProcess_ValidateDataStructure);
-    if (scene == nullptr || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0) throw std::runtime_error(importer.GetErrorString());
+    if (scene == nullptr || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0)
+        throw std::runtime_error(importer.GetErrorString());
     if (scene->mRootNode == nullptr) throw WalkError("no root node");
     Reading r;
     std::set<unsigned> used;
@@ -65,8 +69,11 @@ Reading by_assimp(const fs::path& path) {
         if (i >= scene->mNumMaterials) continue;
         aiString map;
         const aiMaterial& m = *scene->mMaterials[i];
-        if (m.GetTexture(aiTextureType_BASE_COLOR, 0, &map) != AI_SUCCESS && m.GetTexture(aiTextureType_DIFFUSE, 0, &map) != AI_SUCCESS) continue;
-        if (scene->GetEmbeddedTexture(map.C_Str()) != nullptr || exists_quietly(path.parent_path() / map.C_Str())) maps.insert(map.C_Str());
+        if (m.GetTexture(aiTextureType_BASE_COLOR, 0, &map) != AI_SUCCESS &&
+            m.GetTexture(aiTextureType_DIFFUSE, 0, &map) != AI_SUCCESS)
+            continue;
+        if (scene->GetEmbeddedTexture(map.C_Str()) != nullptr || exists_quietly(path.parent_path() / map.C_Str()))
+            maps.insert(map.C_Str());
     }
     r.textures = maps.size();
     return r;

@@ -31,7 +31,8 @@ std::vector<Case> cases(const fs::path& models) {
         {"RecursiveNodes.gltf", "glTF2/RecursiveNodes/RecursiveNodes.gltf"},
     };
     for (const char* name : {"badArray", "badExtension", "badNumber", "badObject", "badString", "badUint"}) {
-        broken.emplace_back(std::string("wrongTypes/") + name + ".gltf", std::string("glTF2/wrongTypes/") + name + ".gltf");
+        broken.emplace_back(std::string("wrongTypes/") + name + ".gltf",
+                            std::string("glTF2/wrongTypes/") + name + ".gltf");
     }
     // The folders of invalid files (glTF2/invalid in later releases): every one of a format we read.
     for (const char* folder : {"invalid", "glTF2/invalid"}) {
@@ -42,7 +43,8 @@ std::vector<Case> cases(const fs::path& models) {
         for (const fs::path& p : invalid) {
             const std::string ending = lower_extension(p);
             if (ending == ".gltf" || ending == ".glb" || ending == ".stl" || ending == ".ply" || ending == ".obj") {
-                broken.emplace_back(std::string(folder) + "/" + p.filename().string(), fs::relative(p, models).string());
+                broken.emplace_back(std::string(folder) + "/" + p.filename().string(),
+                                    fs::relative(p, models).string());
             }
         }
     }

@@ -12,18 +12,19 @@ namespace loader_lab {
 
 const char* name_of(Loader loader) {
     switch (loader) {
-        case Loader::product: return "product";
-        case Loader::product_nomaps: return "product-nomaps";
-        case Loader::product_in_process: return "product-in-process";
-        case Loader::assimp: return "assimp";
-        case Loader::tinygltf: return "tinygltf";
-        case Loader::tinyobjloader: return "tinyobjloader";
+    case Loader::product: return "product";
+    case Loader::product_nomaps: return "product-nomaps";
+    case Loader::product_in_process: return "product-in-process";
+    case Loader::assimp: return "assimp";
+    case Loader::tinygltf: return "tinygltf";
+    case Loader::tinyobjloader: return "tinyobjloader";
     }
     return "?";
 }
 
 std::string one_line(std::string text, std::size_t limit) {
-    std::replace_if(text.begin(), text.end(), [](char c) { return c == '\n' || c == '\r' || c == '\t'; }, ' ');
+    std::replace_if(
+        text.begin(), text.end(), [](char c) { return c == '\n' || c == '\r' || c == '\t'; }, ' ');
     std::replace(text.begin(), text.end(), '|', '/');  // it would end a Markdown table's cell
     if (text.size() > limit) text = text.substr(0, limit - 3) + "...";
     return text;
@@ -37,7 +38,8 @@ std::string field(std::string text, std::size_t limit) {
 
 std::string lower_extension(const fs::path& path) {
     std::string ending = path.extension().string();
-    std::transform(ending.begin(), ending.end(), ending.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    std::transform(ending.begin(), ending.end(), ending.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     return ending;
 }
 
@@ -48,12 +50,12 @@ bool exists_quietly(const fs::path& path) {
 
 Reading read_with(Loader loader, const fs::path& path) {
     switch (loader) {
-        case Loader::product: return by_product(path, true);
-        case Loader::product_nomaps: return by_product(path, false);
-        case Loader::product_in_process: return by_product(path, true, false);
-        case Loader::assimp: return by_assimp(path);
-        case Loader::tinygltf: return by_tinygltf(path);
-        case Loader::tinyobjloader: return by_tinyobjloader(path);
+    case Loader::product: return by_product(path, true);
+    case Loader::product_nomaps: return by_product(path, false);
+    case Loader::product_in_process: return by_product(path, true, false);
+    case Loader::assimp: return by_assimp(path);
+    case Loader::tinygltf: return by_tinygltf(path);
+    case Loader::tinyobjloader: return by_tinyobjloader(path);
     }
     throw std::logic_error("no such loader");
 }
@@ -66,7 +68,8 @@ bool reads(Loader loader, const fs::path& path) {
 }
 
 std::string difference(const Reading& a, const Reading& b) {
-    if (a.drawn() != b.drawn()) return std::to_string(a.drawn()) + " triangles with area against " + std::to_string(b.drawn());
+    if (a.drawn() != b.drawn())
+        return std::to_string(a.drawn()) + " triangles with area against " + std::to_string(b.drawn());
     const double diagonal = std::max(glm::length(a.box.high - a.box.low), glm::length(b.box.high - b.box.low));
     for (int k = 0; k < 3; ++k) {
         for (const auto& [x, y] : {std::pair{a.box.low[k], b.box.low[k]}, std::pair{a.box.high[k], b.box.high[k]}}) {

@@ -20,7 +20,8 @@ namespace fs = std::filesystem;
 // product-nomaps is the product without decoding texture maps: how much of its time the maps are;
 // product-in-process reads in this process rather than a child: what the child process costs.
 enum class Loader { product, product_nomaps, product_in_process, assimp, tinygltf, tinyobjloader };
-inline constexpr std::array kLoaders{Loader::product, Loader::product_nomaps, Loader::product_in_process, Loader::assimp, Loader::tinygltf, Loader::tinyobjloader};
+inline constexpr std::array kLoaders{Loader::product, Loader::product_nomaps, Loader::product_in_process,
+                                     Loader::assimp,  Loader::tinygltf,       Loader::tinyobjloader};
 
 const char* name_of(Loader loader);
 

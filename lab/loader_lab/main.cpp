@@ -26,7 +26,8 @@ double time_batch(Loader loader, const Case& c, int count) {
     const std::size_t expected = c.outcomes.at(loader).reading.triangles;
     const auto start = std::chrono::steady_clock::now();
     for (int i = 0; i < count; ++i) {
-        if (read_with(loader, c.path).triangles != expected) throw std::runtime_error(c.label + ": " + name_of(loader) + " read it differently twice");
+        if (read_with(loader, c.path).triangles != expected)
+            throw std::runtime_error(c.label + ": " + name_of(loader) + " read it differently twice");
     }
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / count;
 }
@@ -59,14 +60,17 @@ int main(int argc, char** argv) {
     // Every (file, loader) once in a child process first: what it read, refused, or died of.
     for (Case& c : all) {
         for (const Loader loader : kLoaders) {
-            if (!reads(loader, c.path) || (c.malformed && (loader == Loader::product_nomaps || loader == Loader::product_in_process))) continue;
+            if (!reads(loader, c.path) ||
+                (c.malformed && (loader == Loader::product_nomaps || loader == Loader::product_in_process)))
+                continue;
             c.outcomes[loader] = probe(loader, c.path);
             Outcome& o = c.outcomes[loader];
             // The product names the file first ("file: ..." or "file:12: ..."); the tables already do.
             if (const std::string named = c.path.string() + ":"; o.message.rfind(named, 0) == 0) {
                 o.message.erase(0, named.size());
                 const std::size_t digits = o.message.find_first_not_of("0123456789");
-                if (digits > 0 && digits != std::string::npos && o.message[digits] == ':') o.message = "line " + o.message;
+                if (digits > 0 && digits != std::string::npos && o.message[digits] == ':')
+                    o.message = "line " + o.message;
                 if (o.message.rfind(' ', 0) == 0) o.message.erase(0, 1);
             }
             std::cerr << "loader-lab: " << c.label << ", " << name_of(loader) << ": " << o.status;
@@ -94,7 +98,8 @@ int main(int argc, char** argv) {
         for (const auto& [loader, o] : c.outcomes) {
             if (o.status != "accepted") continue;
             const double once = time_batch(loader, c, 1);
-            c.batch[loader] = static_cast<int>(std::clamp(std::ceil(kSampleSeconds / std::max(once, 1e-9)), 1.0, 1000.0));
+            c.batch[loader] =
+                static_cast<int>(std::clamp(std::ceil(kSampleSeconds / std::max(once, 1e-9)), 1.0, 1000.0));
         }
     }
     for (int r = 0; r < rounds; ++r) {

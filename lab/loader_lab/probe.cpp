@@ -85,7 +85,8 @@ Outcome probe(Loader loader, const fs::path& path) {
     bool hung = false;
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(kProbeSeconds);
     for (;;) {
-        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now()).count();
+        const auto left =
+            std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now()).count();
         if (left <= 0) {
             hung = true;
             break;
@@ -109,7 +110,8 @@ Outcome probe(Loader loader, const fs::path& path) {
         outcome.status = "hung (killed after " + std::to_string(kProbeSeconds) + " s)";
     } else if (WIFSIGNALED(status)) {
         const char* signal_name = sigabbrev_np(WTERMSIG(status));
-        outcome.status = std::string("crashed (SIG") + (signal_name != nullptr ? signal_name : std::to_string(WTERMSIG(status)).c_str()) + ")";
+        outcome.status = std::string("crashed (SIG") +
+                         (signal_name != nullptr ? signal_name : std::to_string(WTERMSIG(status)).c_str()) + ")";
     } else if (text.rfind("accepted ", 0) == 0) {
         outcome.status = "accepted";
         outcome.reading = decode(text.substr(9));

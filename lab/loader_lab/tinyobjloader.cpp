@@ -33,7 +33,8 @@ Reading by_tinyobjloader(const fs::path& path) {
             std::vector<glm::dvec3> corners;
             for (std::size_t k = first; k < next; ++k) {
                 const int v = shape.mesh.indices[k].vertex_index;
-                if (v < 0 || static_cast<std::size_t>(v) >= r.vertices) throw WalkError("a face names a vertex the file lacks");
+                if (v < 0 || static_cast<std::size_t>(v) >= r.vertices)
+                    throw WalkError("a face names a vertex the file lacks");
                 const std::size_t at = static_cast<std::size_t>(v) * 3;
                 corners.emplace_back(attrib.vertices[at], attrib.vertices[at + 1], attrib.vertices[at + 2]);
             }

@@ -39,7 +39,7 @@ struct ClipPlanes {
     // width x height image (the lab sets it to 0 to clip all six planes at the image).
     ClipPlanes(int width, int height, double band = kGuardBandPixels) noexcept {
         const double gx = 1.0 + 2.0 * band / width, gy = 1.0 + 2.0 * band / height;
-        planes = {glm::dvec4{0, 0, 1, 0}, glm::dvec4{0, 0, -1, 1}, glm::dvec4{1, 0, 0, gx},
+        planes = {glm::dvec4{0, 0, 1, 0},   glm::dvec4{0, 0, -1, 1}, glm::dvec4{1, 0, 0, gx},
                   glm::dvec4{-1, 0, 0, gx}, glm::dvec4{0, 1, 0, gy}, glm::dvec4{0, -1, 0, gy}};
     }
     [[nodiscard]] static double distance(const glm::dvec4& plane, const glm::dvec4& clip) noexcept {

@@ -12,8 +12,7 @@ namespace {
 void require_side(int side, const char* name) {
     if (side < 1 || side > kMaxSubpixelCoordinate) {
         throw std::invalid_argument(std::string("camera ") + name + " must be 1.." +
-                                    std::to_string(kMaxSubpixelCoordinate) + " pixels, got " +
-                                    std::to_string(side));
+                                    std::to_string(kMaxSubpixelCoordinate) + " pixels, got " + std::to_string(side));
     }
 }
 

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <glm/geometric.hpp>
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <glm/geometric.hpp>
 
 namespace raster {
 
@@ -13,7 +13,8 @@ PerspectiveCamera::PerspectiveCamera(OrthoCamera view, int width, int height, Le
     : view_(view), width_(width), height_(height), lens_(lens) {
     static_cast<void>(OrthoCamera(width, height));  // the same size limits, with the same errors
     if (!(lens.fov_y_degrees > 0.0 && lens.fov_y_degrees < 180.0)) {
-        throw std::invalid_argument("field of view must be between 0 and 180 degrees, got " + std::to_string(lens.fov_y_degrees));
+        throw std::invalid_argument("field of view must be between 0 and 180 degrees, got " +
+                                    std::to_string(lens.fov_y_degrees));
     }
     // Within these, view depths stay normal floats and their reciprocals finite.
     constexpr double kNearest = 1e-18, kFarthest = 1e18;
@@ -54,7 +55,8 @@ glm::dvec2 PerspectiveCamera::screen_from_clip(glm::dvec4 clip) const noexcept {
 
 PerspectiveCamera perspective_matching(const OrthoCamera& flat, int width, int height, double fov_degrees) {
     if (!(fov_degrees > 0.0 && fov_degrees < 180.0)) {
-        throw std::invalid_argument("field of view must be between 0 and 180 degrees, got " + std::to_string(fov_degrees));
+        throw std::invalid_argument("field of view must be between 0 and 180 degrees, got " +
+                                    std::to_string(fov_degrees));
     }
     const double to_origin = flat.view_from_world(glm::vec3(0.0F)).z;
     // Pixels per world unit match the orthographic camera's on the plane through the origin.
@@ -63,7 +65,8 @@ PerspectiveCamera perspective_matching(const OrthoCamera& flat, int width, int h
     const PerspectiveCamera::Lens lens{fov_degrees, distance / 100.0, distance + 100.0};
     // The same axes, the eye moved in double precision: no rounding through floats on the way.
     const OrthoCamera moved = flat.dollied(to_origin - distance);
-    if (!std::isfinite(glm::length(glm::dvec3(moved.eye())))) throw std::invalid_argument("camera eye is too far out to move back");
+    if (!std::isfinite(glm::length(glm::dvec3(moved.eye()))))
+        throw std::invalid_argument("camera eye is too far out to move back");
     return PerspectiveCamera::from_view(moved, width, height, lens);
 }
 

@@ -20,15 +20,14 @@ std::array<glm::vec3, 8> unit_corners() {
 }  // namespace
 
 Cube::Cube()
-    : corners_(unit_corners()),
-      faces_{{
-          {{0, 2, 3, 1}, {0.0F, 0.0F, -1.0F}},  // near (-Z)
-          {{5, 7, 6, 4}, {0.0F, 0.0F, 1.0F}},   // far (+Z)
-          {{1, 3, 7, 5}, {1.0F, 0.0F, 0.0F}},   // right (+X)
-          {{4, 6, 2, 0}, {-1.0F, 0.0F, 0.0F}},  // left (-X)
-          {{2, 6, 7, 3}, {0.0F, 1.0F, 0.0F}},   // top (+Y)
-          {{1, 5, 4, 0}, {0.0F, -1.0F, 0.0F}},  // bottom (-Y)
-      }} {}
+    : corners_(unit_corners()), faces_{{
+                                    {{0, 2, 3, 1}, {0.0F, 0.0F, -1.0F}},  // near (-Z)
+                                    {{5, 7, 6, 4}, {0.0F, 0.0F, 1.0F}},   // far (+Z)
+                                    {{1, 3, 7, 5}, {1.0F, 0.0F, 0.0F}},   // right (+X)
+                                    {{4, 6, 2, 0}, {-1.0F, 0.0F, 0.0F}},  // left (-X)
+                                    {{2, 6, 7, 3}, {0.0F, 1.0F, 0.0F}},   // top (+Y)
+                                    {{1, 5, 4, 0}, {0.0F, -1.0F, 0.0F}},  // bottom (-Y)
+                                }} {}
 
 Cube Cube::posed(const glm::mat4& model) const {
     const glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(model)));

@@ -17,8 +17,8 @@ glm::vec3 facet_normal(glm::vec3 a, glm::vec3 b, glm::vec3 c) noexcept {
     return unit_or_zero(glm::cross(b - a, c - b));
 }
 
-Facet facet_facing_away(const std::vector<glm::vec3>& positions, std::uint32_t a, std::uint32_t b,
-                        std::uint32_t c, glm::vec3 inside) {
+Facet facet_facing_away(const std::vector<glm::vec3>& positions, std::uint32_t a, std::uint32_t b, std::uint32_t c,
+                        glm::vec3 inside) {
     Facet facet{{a, b, c}, facet_normal(positions[a], positions[b], positions[c])};
     const glm::vec3 centre = (positions[a] + positions[b] + positions[c]) / 3.0F;
     if (glm::dot(facet.normal, centre - inside) < 0.0F) {
@@ -39,7 +39,8 @@ Mesh posed(const Mesh& mesh, const glm::mat4& model, PoseParts parts) {
 
 void append_posed(Mesh& whole, const Mesh& part, const glm::mat4& model) {
     const bool empty = whole.positions.empty();
-    if (!empty && (whole.uvs.empty() != part.uvs.empty() || whole.colours.empty() != part.colours.empty() || whole.surface != part.surface)) {
+    if (!empty && (whole.uvs.empty() != part.uvs.empty() || whole.colours.empty() != part.colours.empty() ||
+                   whole.surface != part.surface)) {
         throw std::invalid_argument("append_posed: the parts differ in texture coordinates, colours or surface");
     }
     Mesh moved = posed(part, model);
@@ -73,8 +74,10 @@ Posing::Posing(const Mesh& mesh, const glm::mat4& model, PoseParts parts)
 
 void Posing::vertices(std::size_t begin, std::size_t end) noexcept {
     for (std::size_t i = begin; i < end; ++i) {  // normals may not match positions yet: drawing checks that
-        if (i < source_.positions.size()) result_.positions[i] = glm::vec3(model_ * glm::vec4(source_.positions[i], 1.0F));
-        if (parts_.vertex_normals && i < source_.normals.size()) result_.normals[i] = unit_or_zero(normal_matrix_ * source_.normals[i]);
+        if (i < source_.positions.size())
+            result_.positions[i] = glm::vec3(model_ * glm::vec4(source_.positions[i], 1.0F));
+        if (parts_.vertex_normals && i < source_.normals.size())
+            result_.normals[i] = unit_or_zero(normal_matrix_ * source_.normals[i]);
     }
 }
 

@@ -47,8 +47,8 @@ std::vector<glm::dvec2> counter_clockwise_outline(std::span<const glm::dvec3> co
 class EarRing {
 public:
     explicit EarRing(std::vector<glm::dvec2> outline)
-        : points_(std::move(outline)), prev_(points_.size()), next_(points_.size()),
-          convex_(points_.size()), ear_(points_.size()), remaining_(points_.size()) {
+        : points_(std::move(outline)), prev_(points_.size()), next_(points_.size()), convex_(points_.size()),
+          ear_(points_.size()), remaining_(points_.size()) {
         glm::dvec2 low = points_[0], high = points_[0];
         for (const glm::dvec2 p : points_) {
             low = glm::min(low, p);
@@ -130,9 +130,7 @@ private:
     }
 
     // Whether q lies strictly left of the line from p through r, beyond the noise.
-    [[nodiscard]] bool left_of(glm::dvec2 p, glm::dvec2 r, glm::dvec2 q) const {
-        return orientation(p, r, q) > flat_;
-    }
+    [[nodiscard]] bool left_of(glm::dvec2 p, glm::dvec2 r, glm::dvec2 q) const { return orientation(p, r, q) > flat_; }
 
     // A convex corner whose triangle holds no reflex or flat corner (any corner inside implies one),
     // no edge entering it from a corner at one of its own places (a slit's ends only touch it), and
@@ -151,9 +149,7 @@ private:
                 // The triangle's angle at q is bounded by the two edges meeting there.
                 const glm::dvec2 from = q == pa ? pc : (q == pb ? pa : pb);
                 const glm::dvec2 to = q == pa ? pb : (q == pb ? pc : pa);
-                const auto enters = [&](glm::dvec2 end) {
-                    return left_of(from, q, end) && left_of(q, to, end);
-                };
+                const auto enters = [&](glm::dvec2 end) { return left_of(from, q, end) && left_of(q, to, end); };
                 if (enters(points_[prev_[i]]) || enters(points_[next_[i]])) return false;
             } else if (!convex_[i] && orientation(pa, pb, q) >= -flat_ && orientation(pb, pc, q) >= -flat_ &&
                        orientation(pc, pa, q) >= -flat_) {

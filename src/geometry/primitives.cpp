@@ -11,7 +11,8 @@ namespace raster {
 namespace {
 
 // A flat four-cornered face; corners in order round its edge, either way.
-void add_face(Mesh& mesh, const std::array<glm::vec3, 4>& corners, const std::array<glm::vec2, 4>& uvs, glm::vec3 inside) {
+void add_face(Mesh& mesh, const std::array<glm::vec3, 4>& corners, const std::array<glm::vec2, 4>& uvs,
+              glm::vec3 inside) {
     const auto first = static_cast<std::uint32_t>(mesh.positions.size());
     const glm::vec3 normal = unit_or_zero(glm::cross(corners[1] - corners[0], corners[2] - corners[1]));
     for (std::size_t k = 0; k < 4; ++k) {
@@ -69,11 +70,14 @@ Mesh textured_pyramid(float width, float depth, float height, float tile) {
         const auto first = static_cast<std::uint32_t>(mesh.positions.size());
         const float run = glm::length(b - a), slant = glm::length(apex - (a + b) * 0.5F);
         mesh.positions.insert(mesh.positions.end(), {a, b, apex});
-        mesh.uvs.insert(mesh.uvs.end(), {glm::vec2(0.0F), glm::vec2(run / tile, 0.0F), glm::vec2(run * 0.5F / tile, slant / tile)});
+        mesh.uvs.insert(mesh.uvs.end(),
+                        {glm::vec2(0.0F), glm::vec2(run / tile, 0.0F), glm::vec2(run * 0.5F / tile, slant / tile)});
         mesh.facets.push_back(facet_facing_away(mesh.positions, first, first + 1, first + 2, inside));
         mesh.normals.insert(mesh.normals.end(), 3, mesh.facets.back().normal);
     }
-    add_face(mesh, base, {glm::vec2(-x, -z) / tile, glm::vec2(x, -z) / tile, glm::vec2(x, z) / tile, glm::vec2(-x, z) / tile}, inside);
+    add_face(mesh, base,
+             {glm::vec2(-x, -z) / tile, glm::vec2(x, -z) / tile, glm::vec2(x, z) / tile, glm::vec2(-x, z) / tile},
+             inside);
     return mesh;
 }
 
@@ -83,7 +87,8 @@ Mesh textured_ground(float width, float depth, float tile) {
     mesh.convex = true;
     const float x = width * 0.5F, z = depth * 0.5F;
     add_face(mesh, {glm::vec3(-x, 0, -z), glm::vec3(x, 0, -z), glm::vec3(x, 0, z), glm::vec3(-x, 0, z)},
-             {glm::vec2(-x, -z) / tile, glm::vec2(x, -z) / tile, glm::vec2(x, z) / tile, glm::vec2(-x, z) / tile}, glm::vec3(0, -1, 0));
+             {glm::vec2(-x, -z) / tile, glm::vec2(x, -z) / tile, glm::vec2(x, z) / tile, glm::vec2(-x, z) / tile},
+             glm::vec3(0, -1, 0));
     return mesh;
 }
 
@@ -96,20 +101,24 @@ Mesh textured_prism(int sides, float radius, float length, float tile) {
     const float side = 2.0F * radius * static_cast<float>(std::sin(step / 2.0));
     std::vector<glm::vec3> ring;
     for (int k = 0; k < sides; ++k) {
-        ring.emplace_back(radius * static_cast<float>(std::cos(k * step)), radius * static_cast<float>(std::sin(k * step)), 0.0F);
+        ring.emplace_back(radius * static_cast<float>(std::cos(k * step)),
+                          radius * static_cast<float>(std::sin(k * step)), 0.0F);
     }
     for (int k = 0; k < sides; ++k) {
         const glm::vec3 a = ring[static_cast<std::size_t>(k)], b = ring[static_cast<std::size_t>((k + 1) % sides)];
         const float u0 = static_cast<float>(k) * side / tile, u1 = u0 + side / tile;
-        add_face(mesh, {a + glm::vec3(0, 0, -z), b + glm::vec3(0, 0, -z), b + glm::vec3(0, 0, z), a + glm::vec3(0, 0, z)},
-                 {glm::vec2(u0, -z / tile), glm::vec2(u1, -z / tile), glm::vec2(u1, z / tile), glm::vec2(u0, z / tile)}, glm::vec3(0.0F));
+        add_face(mesh,
+                 {a + glm::vec3(0, 0, -z), b + glm::vec3(0, 0, -z), b + glm::vec3(0, 0, z), a + glm::vec3(0, 0, z)},
+                 {glm::vec2(u0, -z / tile), glm::vec2(u1, -z / tile), glm::vec2(u1, z / tile), glm::vec2(u0, z / tile)},
+                 glm::vec3(0.0F));
     }
     // Each cap a fan of triangles round its centre, so that any number of sides stays flat and convex.
     for (const float end : {-z, z}) {
         const glm::vec3 centre(0.0F, 0.0F, end), inside(0.0F, 0.0F, -end);
         for (int k = 0; k < sides; ++k) {
             const auto first = static_cast<std::uint32_t>(mesh.positions.size());
-            const glm::vec3 a = ring[static_cast<std::size_t>(k)] + centre, b = ring[static_cast<std::size_t>((k + 1) % sides)] + centre;
+            const glm::vec3 a = ring[static_cast<std::size_t>(k)] + centre,
+                            b = ring[static_cast<std::size_t>((k + 1) % sides)] + centre;
             mesh.positions.insert(mesh.positions.end(), {centre, a, b});
             mesh.uvs.insert(mesh.uvs.end(), {glm::vec2(0.0F), glm::vec2(a.x, a.y) / tile, glm::vec2(b.x, b.y) / tile});
             mesh.facets.push_back(facet_facing_away(mesh.positions, first, first + 1, first + 2, inside));
@@ -153,7 +162,8 @@ Mesh torus_knot(int p, int q, float tube, int segments, int sides, float repeats
             const glm::dvec3 out = std::cos(a) * normal + std::sin(a) * binormal;
             mesh.positions.emplace_back(centre + static_cast<double>(tube) * out);
             mesh.normals.emplace_back(out);
-            mesh.uvs.emplace_back(repeats * static_cast<float>(i) / static_cast<float>(segments), static_cast<float>(j) / static_cast<float>(sides));
+            mesh.uvs.emplace_back(repeats * static_cast<float>(i) / static_cast<float>(segments),
+                                  static_cast<float>(j) / static_cast<float>(sides));
         }
     }
     const auto at = [&](int i, int j) { return static_cast<std::uint32_t>(i * (sides + 1) + j); };

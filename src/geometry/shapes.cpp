@@ -61,8 +61,8 @@ Mesh dodecahedron() {
     // cyclic shifts of (0, phi, 1); its corners are the five vertices farthest along it.
     for (const float a : {-1.0F, 1.0F}) {
         for (const float b : {-1.0F, 1.0F}) {
-            for (const glm::vec3 axis : {glm::vec3(0.0F, a * phi, b), glm::vec3(a * phi, b, 0.0F),
-                                         glm::vec3(b, 0.0F, a * phi)}) {
+            for (const glm::vec3 axis :
+                 {glm::vec3(0.0F, a * phi, b), glm::vec3(a * phi, b, 0.0F), glm::vec3(b, 0.0F, a * phi)}) {
                 std::vector<std::uint32_t> corners(mesh.positions.size());
                 for (std::size_t i = 0; i < corners.size(); ++i) corners[i] = index_of(i);
                 std::partial_sort(corners.begin(), corners.begin() + 5, corners.end(), [&](auto i, auto j) {
@@ -70,14 +70,17 @@ Mesh dodecahedron() {
                 });
                 corners.resize(5);
                 // Order the five by angle around the axis, then fan from the first.
-                const glm::vec3 u = glm::normalize(mesh.positions[corners[0]] - axis * glm::dot(mesh.positions[corners[0]], axis) / glm::dot(axis, axis));
+                const glm::vec3 u =
+                    glm::normalize(mesh.positions[corners[0]] -
+                                   axis * glm::dot(mesh.positions[corners[0]], axis) / glm::dot(axis, axis));
                 const glm::vec3 v = glm::normalize(glm::cross(axis, u));
                 std::sort(corners.begin(), corners.end(), [&](auto i, auto j) {
                     return std::atan2(glm::dot(mesh.positions[i], v), glm::dot(mesh.positions[i], u)) <
                            std::atan2(glm::dot(mesh.positions[j], v), glm::dot(mesh.positions[j], u));
                 });
                 for (std::size_t k = 1; k + 1 < corners.size(); ++k) {
-                    mesh.facets.push_back(facet_facing_away(mesh.positions, corners[0], corners[k], corners[k + 1], kCentre));
+                    mesh.facets.push_back(
+                        facet_facing_away(mesh.positions, corners[0], corners[k], corners[k + 1], kCentre));
                 }
             }
         }
@@ -98,7 +101,8 @@ Mesh sphere(int level) {
     std::vector<std::array<std::uint32_t, 3>> triangles;
     for (const std::uint32_t x : {0U, 1U}) {
         for (const std::uint32_t y : {2U, 3U}) {
-            for (const std::uint32_t z : {4U, 5U}) triangles.push_back(facet_facing_away(mesh.positions, x, y, z, kCentre).corners);
+            for (const std::uint32_t z : {4U, 5U})
+                triangles.push_back(facet_facing_away(mesh.positions, x, y, z, kCentre).corners);
         }
     }
     for (int pass = 0; pass < level; ++pass) {

@@ -63,7 +63,8 @@ const std::array<float, 256>& linear_from_srgb_bytes() noexcept {
     // Immutable after its first use, like the encoding thresholds.
     static const std::array<float, 256> table = [] {
         std::array<float, 256> linear{};
-        for (std::size_t b = 0; b < linear.size(); ++b) linear[b] = static_cast<float>(linear_from_srgb_channel(static_cast<double>(b) / 255.0));
+        for (std::size_t b = 0; b < linear.size(); ++b)
+            linear[b] = static_cast<float>(linear_from_srgb_channel(static_cast<double>(b) / 255.0));
         return linear;
     }();
     return table;

@@ -12,30 +12,26 @@ namespace {
 int checked_side(int side, const char* name) {
     if (side < 1 || side > kMaxImageSide) {
         throw std::invalid_argument(std::string("framebuffer ") + name + " must be 1.." +
-                                    std::to_string(kMaxImageSide) + ", got " +
-                                    std::to_string(side));
+                                    std::to_string(kMaxImageSide) + ", got " + std::to_string(side));
     }
     return side;
 }
 
 std::size_t offset_of(int x, int y, int width) {
-    return (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
-            static_cast<std::size_t>(x)) * 3;
+    return (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)) * 3;
 }
 
 }  // namespace
 
 Framebuffer::Framebuffer(int width, int height)
-    : width_(checked_side(width, "width")),
-      height_(checked_side(height, "height")),
+    : width_(checked_side(width, "width")), height_(checked_side(height, "height")),
       bytes_(offset_of(0, height_, width_), 0) {}
 
 Framebuffer::Framebuffer(int width, int height, std::vector<std::uint8_t> rgb)
-    : width_(checked_side(width, "width")), height_(checked_side(height, "height")),
-      bytes_(std::move(rgb)) {
+    : width_(checked_side(width, "width")), height_(checked_side(height, "height")), bytes_(std::move(rgb)) {
     if (bytes_.size() != offset_of(0, height_, width_)) {
-        throw std::invalid_argument("framebuffer bytes do not match " + std::to_string(width_) +
-                                    "x" + std::to_string(height_) + " RGB");
+        throw std::invalid_argument("framebuffer bytes do not match " + std::to_string(width_) + "x" +
+                                    std::to_string(height_) + " RGB");
     }
 }
 
@@ -52,8 +48,7 @@ void Framebuffer::fill_row(int y, int x_begin, int x_end, Rgb colour) noexcept {
     x_begin = std::max(x_begin, 0);
     x_end = std::min(x_end, width_);
     if (x_begin >= x_end) return;  // empty, or wholly left or right of the buffer
-    for (std::size_t at = offset_of(x_begin, y, width_), end = offset_of(x_end, y, width_); at < end;
-         at += 3) {
+    for (std::size_t at = offset_of(x_begin, y, width_), end = offset_of(x_end, y, width_); at < end; at += 3) {
         bytes_[at] = colour.r;
         bytes_[at + 1] = colour.g;
         bytes_[at + 2] = colour.b;
@@ -87,7 +82,8 @@ void Framebuffer::clear_rows(int y_begin, int y_end, Rgb colour) noexcept {
 std::vector<std::uint8_t> rgba_bytes(const Framebuffer& image, std::span<const std::uint8_t> alpha) {
     const auto pixels = static_cast<std::size_t>(image.width()) * static_cast<std::size_t>(image.height());
     if (alpha.size() != pixels) {
-        throw std::invalid_argument("alpha has " + std::to_string(alpha.size()) + " bytes for " + std::to_string(pixels) + " pixels");
+        throw std::invalid_argument("alpha has " + std::to_string(alpha.size()) + " bytes for " +
+                                    std::to_string(pixels) + " pixels");
     }
     std::vector<std::uint8_t> rgba(pixels * 4);
     const std::uint8_t* rgb = image.bytes().data();

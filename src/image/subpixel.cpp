@@ -18,7 +18,8 @@ std::optional<SubpixelPoint> snap_to_subpixel(glm::dvec2 screen) noexcept {
         return static_cast<double>(t) > v ? t - 1 : t;
     };
     const std::int64_t fx = floor_of(x), fy = floor_of(y);
-    if (!(std::abs(fx) <= static_cast<std::int64_t>(limit) && std::abs(fy) <= static_cast<std::int64_t>(limit))) return std::nullopt;
+    if (!(std::abs(fx) <= static_cast<std::int64_t>(limit) && std::abs(fy) <= static_cast<std::int64_t>(limit)))
+        return std::nullopt;
     return SubpixelPoint{static_cast<std::int32_t>(fx), static_cast<std::int32_t>(fy)};
 }
 

@@ -30,7 +30,8 @@ struct EdgeKey {
 struct EdgeHash {
     std::size_t operator()(const EdgeKey& e) const noexcept {
         std::size_t h = 1469598103934665603ULL;
-        for (const std::uint32_t word : {e.from.x, e.from.y, e.from.z, e.to.x, e.to.y, e.to.z}) h = (h ^ word) * 1099511628211ULL;
+        for (const std::uint32_t word : {e.from.x, e.from.y, e.from.z, e.to.x, e.to.y, e.to.z})
+            h = (h ^ word) * 1099511628211ULL;
         return h;
     }
 };
@@ -56,7 +57,8 @@ std::vector<bool> open_parts(const Model& model) {
             }
         }
     };
-    for (const ModelPart& part : model.parts) for_each_edge(part, [&](const EdgeKey& edge, int way) { balance[edge] += way; });
+    for (const ModelPart& part : model.parts)
+        for_each_edge(part, [&](const EdgeKey& edge, int way) { balance[edge] += way; });
     std::vector<bool> open;
     for (const ModelPart& part : model.parts) {
         bool has_border = false;

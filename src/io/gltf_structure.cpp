@@ -3,9 +3,9 @@
 
 #include <algorithm>
 #include <cstring>
-#include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <vector>
+#include <nlohmann/json.hpp>
 
 namespace raster::detail {
 namespace {
@@ -24,8 +24,10 @@ int json_depth(std::string_view text) {
     for (std::size_t i = 0; i < text.size(); ++i) {
         const char c = text[i];
         if (in_string) {
-            if (c == '\\') ++i;
-            else if (c == '"') in_string = false;
+            if (c == '\\')
+                ++i;
+            else if (c == '"')
+                in_string = false;
         } else if (c == '"') {
             in_string = true;
         } else if (c == '[' || c == '{') {
@@ -55,18 +57,23 @@ std::uint64_t number_at(const Json& object, const char* key, const std::string& 
 }
 
 // The index at `key` checked against `count`; nothing where there is none.
-std::optional<std::uint64_t> index_at(const Json& object, const char* key, std::size_t count, const std::string& what, const char* of) {
+std::optional<std::uint64_t> index_at(const Json& object, const char* key, std::size_t count, const std::string& what,
+                                      const char* of) {
     if (!object.is_object() || object.find(key) == object.end()) return std::nullopt;
     const std::uint64_t index = number_at(object, key, what);
-    if (index >= count) throw Broken(what + " names " + of + " " + std::to_string(index) + ", but there are " + std::to_string(count));
+    if (index >= count)
+        throw Broken(what + " names " + of + " " + std::to_string(index) + ", but there are " + std::to_string(count));
     return index;
 }
 
 std::uint64_t component_bytes(std::uint64_t type, const std::string& what) {
     switch (type) {
-    case 5120: case 5121: return 1;
-    case 5122: case 5123: return 2;
-    case 5125: case 5126: return 4;
+    case 5120:
+    case 5121: return 1;
+    case 5122:
+    case 5123: return 2;
+    case 5125:
+    case 5126: return 4;
     default: throw Broken(what + " has component type " + std::to_string(type) + ", which glTF does not define");
     }
 }
@@ -83,8 +90,9 @@ std::uint64_t components(const Json& accessor, const std::string& what) {
 }
 
 // Each buffer's declared length, checked against the bytes behind it.
-std::vector<std::uint64_t> buffer_lengths(const Json& root, std::optional<std::uint64_t> binary_chunk,
-                                          const std::function<std::optional<std::uint64_t>(std::string_view)>& external_size) {
+std::vector<std::uint64_t> buffer_lengths(
+    const Json& root, std::optional<std::uint64_t> binary_chunk,
+    const std::function<std::optional<std::uint64_t>(std::string_view)>& external_size) {
     std::vector<std::uint64_t> lengths;
     const Json& buffers = array_of(root, "buffers");
     for (std::size_t i = 0; i < buffers.size(); ++i) {
@@ -101,7 +109,8 @@ std::vector<std::uint64_t> buffer_lengths(const Json& root, std::optional<std::u
             there = external_size(text);
         }
         if (there && length > *there) {
-            throw Broken(what + " claims " + std::to_string(length) + " bytes, but only " + std::to_string(*there) + " are there");
+            throw Broken(what + " claims " + std::to_string(length) + " bytes, but only " + std::to_string(*there) +
+                         " are there");
         }
         lengths.push_back(length);
     }
@@ -120,10 +129,13 @@ std::vector<View> buffer_views(const Json& root, const std::vector<std::uint64_t
         const std::string what = "buffer view " + std::to_string(i);
         const std::uint64_t buffer = index_at(list[i], "buffer", buffers.size(), what, "buffer").value_or(UINT64_MAX);
         if (buffer == UINT64_MAX) throw Broken(what + " names no buffer");
-        const std::uint64_t offset = number_at(list[i], "byteOffset", what), length = number_at(list[i], "byteLength", what);
-        if (offset > buffers[buffer] || length > buffers[buffer] - offset) throw Broken(what + " runs past the end of buffer " + std::to_string(buffer));
+        const std::uint64_t offset = number_at(list[i], "byteOffset", what),
+                            length = number_at(list[i], "byteLength", what);
+        if (offset > buffers[buffer] || length > buffers[buffer] - offset)
+            throw Broken(what + " runs past the end of buffer " + std::to_string(buffer));
         const std::uint64_t stride = number_at(list[i], "byteStride", what);
-        if (stride != 0 && (stride < 4 || stride > 252)) throw Broken(what + " has a byte stride of " + std::to_string(stride) + ", outside 4..252");
+        if (stride != 0 && (stride < 4 || stride > 252))
+            throw Broken(what + " has a byte stride of " + std::to_string(stride) + ", outside 4..252");
         views.push_back({length, stride});
     }
     return views;
@@ -142,12 +154,14 @@ void check_accessors(const Json& root, const std::vector<View>& views) {
         const std::string what = "accessor " + std::to_string(i);
         const Json& accessor = list[i];
         if (!accessor.is_object()) throw Broken(what + " is not an object");
-        const std::uint64_t element = component_bytes(number_at(accessor, "componentType", what), what) * components(accessor, what);
+        const std::uint64_t element =
+            component_bytes(number_at(accessor, "componentType", what), what) * components(accessor, what);
         const std::uint64_t count = number_at(accessor, "count", what);
         if (const auto view = index_at(accessor, "bufferView", views.size(), what, "buffer view")) {
             const std::uint64_t stride = views[*view].stride != 0 ? views[*view].stride : element;
             if (!fits(number_at(accessor, "byteOffset", what), count, stride, element, views[*view].length)) {
-                throw Broken(what + " reads " + std::to_string(count) + " items past the end of buffer view " + std::to_string(*view));
+                throw Broken(what + " reads " + std::to_string(count) + " items past the end of buffer view " +
+                             std::to_string(*view));
             }
         } else if (count > (std::uint64_t{1} << 30) / element) {
             throw Broken(what + " claims " + std::to_string(count) + " items with no data behind them");
@@ -155,14 +169,17 @@ void check_accessors(const Json& root, const std::vector<View>& views) {
         const auto sparse = accessor.find("sparse");
         if (sparse == accessor.end()) continue;
         const std::uint64_t changed = number_at(*sparse, "count", what + "'s sparse part");
-        if (changed > count) throw Broken(what + " changes " + std::to_string(changed) + " of its " + std::to_string(count) + " items");
+        if (changed > count)
+            throw Broken(what + " changes " + std::to_string(changed) + " of its " + std::to_string(count) + " items");
         for (const char* part : {"indices", "values"}) {
             const auto found = sparse->find(part);
             if (found == sparse->end()) throw Broken(what + "'s sparse part has no " + part);
             const std::string where = what + "'s sparse " + part;
             const auto view = index_at(*found, "bufferView", views.size(), where, "buffer view");
             if (!view) throw Broken(where + " name no buffer view");
-            const std::uint64_t size = std::string_view(part) == "indices" ? component_bytes(number_at(*found, "componentType", where), where) : element;
+            const std::uint64_t size = std::string_view(part) == "indices"
+                                           ? component_bytes(number_at(*found, "componentType", where), where)
+                                           : element;
             if (!fits(number_at(*found, "byteOffset", where), changed, size, size, views[*view].length)) {
                 throw Broken(where + " run past the end of buffer view " + std::to_string(*view));
             }
@@ -183,11 +200,13 @@ void check_indices(const Json& root) {
             index_at(primitive, "material", materials, what, "material");
             const Json attributes = primitive.value("attributes", Json::object());
             for (const auto& [name, index] : attributes.items()) {
-                if (!index.is_number_unsigned() || index.get<std::uint64_t>() >= accessors) throw Broken(what + "'s " + name.substr(0, 32) + " names no accessor it has");
+                if (!index.is_number_unsigned() || index.get<std::uint64_t>() >= accessors)
+                    throw Broken(what + "'s " + name.substr(0, 32) + " names no accessor it has");
             }
             for (const Json& target : array_of(primitive, "targets")) {
                 for (const auto& [name, index] : target.items()) {
-                    if (!index.is_number_unsigned() || index.get<std::uint64_t>() >= accessors) throw Broken(what + "'s morph target names no accessor it has");
+                    if (!index.is_number_unsigned() || index.get<std::uint64_t>() >= accessors)
+                        throw Broken(what + "'s morph target names no accessor it has");
                 }
             }
         }
@@ -195,8 +214,10 @@ void check_indices(const Json& root) {
     for (const Json& material : array_of(root, "materials")) {
         const Json pbr = material.is_object() ? material.value("pbrMetallicRoughness", Json::object()) : Json::object();
         for (const Json* holder : {&pbr, &material}) {
-            for (const char* key : {"baseColorTexture", "metallicRoughnessTexture", "normalTexture", "occlusionTexture", "emissiveTexture"}) {
-                if (holder->is_object() && holder->contains(key)) index_at((*holder)[key], "index", textures, "a material", "texture");
+            for (const char* key : {"baseColorTexture", "metallicRoughnessTexture", "normalTexture", "occlusionTexture",
+                                    "emissiveTexture"}) {
+                if (holder->is_object() && holder->contains(key))
+                    index_at((*holder)[key], "index", textures, "a material", "texture");
             }
         }
     }
@@ -214,12 +235,14 @@ void check_indices(const Json& root) {
         const std::string what = "skin " + std::to_string(s);
         const Json& joints = array_of(skin_list[s], "joints");
         for (const Json& joint : joints) {
-            if (!joint.is_number_unsigned() || joint.get<std::uint64_t>() >= nodes) throw Broken(what + " names a joint that is no node");
+            if (!joint.is_number_unsigned() || joint.get<std::uint64_t>() >= nodes)
+                throw Broken(what + " names a joint that is no node");
         }
         index_at(skin_list[s], "skeleton", nodes, what, "node");
         if (const auto matrices = index_at(skin_list[s], "inverseBindMatrices", accessors, what, "accessor")) {
             if (number_at(array_of(root, "accessors")[*matrices], "count", what) < joints.size()) {
-                throw Broken(what + " has " + std::to_string(joints.size()) + " joints but fewer inverse bind matrices");
+                throw Broken(what + " has " + std::to_string(joints.size()) +
+                             " joints but fewer inverse bind matrices");
             }
         }
     }
@@ -231,7 +254,8 @@ void check_indices(const Json& root) {
         }
         for (const Json& channel : array_of(animation, "channels")) {
             index_at(channel, "sampler", animation_samplers, "an animation channel", "sampler");
-            if (channel.is_object() && channel.contains("target")) index_at(channel["target"], "node", nodes, "an animation channel", "node");
+            if (channel.is_object() && channel.contains("target"))
+                index_at(channel["target"], "node", nodes, "an animation channel", "node");
         }
     }
 }
@@ -244,7 +268,8 @@ void check_node_graph(const Json& root) {
     std::vector<bool> has_parent(n);
     for (std::size_t i = 0; i < n; ++i) {
         for (const Json& child : array_of(nodes[i], "children")) {
-            if (!child.is_number_unsigned() || child.get<std::uint64_t>() >= n) throw Broken("node " + std::to_string(i) + " names a child that is no node");
+            if (!child.is_number_unsigned() || child.get<std::uint64_t>() >= n)
+                throw Broken("node " + std::to_string(i) + " names a child that is no node");
             children[i].push_back(child.get<std::uint64_t>());
             has_parent[child.get<std::size_t>()] = true;
         }
@@ -271,7 +296,8 @@ void check_node_graph(const Json& root) {
                 instances[node] = std::min(instances[node] + instances[child], kMaxGltfNodeInstances + 1);
                 depth[node] = std::max(depth[node], depth[child] + 1);
             }
-            if (depth[node] > kMaxGltfNodeDepth) throw Broken("its nodes nest more than " + std::to_string(kMaxGltfNodeDepth) + " deep");
+            if (depth[node] > kMaxGltfNodeDepth)
+                throw Broken("its nodes nest more than " + std::to_string(kMaxGltfNodeDepth) + " deep");
             state[node] = done;
             stack.pop_back();
         }
@@ -280,15 +306,18 @@ void check_node_graph(const Json& root) {
     const Json& scenes = array_of(root, "scenes");
     for (const Json& scene : scenes) {
         for (const Json& node : array_of(scene, "nodes")) {
-            if (!node.is_number_unsigned() || node.get<std::uint64_t>() >= n) throw Broken("a scene names a node it lacks");
+            if (!node.is_number_unsigned() || node.get<std::uint64_t>() >= n)
+                throw Broken("a scene names a node it lacks");
             total = std::min(total + instances[node.get<std::size_t>()], kMaxGltfNodeInstances + 1);
         }
     }
     if (scenes.empty()) {
-        for (std::size_t i = 0; i < n; ++i) total = has_parent[i] ? total : std::min(total + instances[i], kMaxGltfNodeInstances + 1);
+        for (std::size_t i = 0; i < n; ++i)
+            total = has_parent[i] ? total : std::min(total + instances[i], kMaxGltfNodeInstances + 1);
     }
     if (total > kMaxGltfNodeInstances) {
-        throw Broken("its shared nodes expand to more than " + std::to_string(kMaxGltfNodeInstances) + " node instances");
+        throw Broken("its shared nodes expand to more than " + std::to_string(kMaxGltfNodeInstances) +
+                     " node instances");
     }
     index_at(root, "scene", scenes.size(), "the file", "scene");
 }
@@ -301,19 +330,24 @@ std::uint32_t word_at(std::span<const std::uint8_t> bytes, std::size_t at) {
 
 }  // namespace
 
-std::string gltf_structure_problem(std::span<const std::uint8_t> bytes, bool binary,
-                                   const std::function<std::optional<std::uint64_t>(std::string_view uri)>& external_size) {
+std::string gltf_structure_problem(
+    std::span<const std::uint8_t> bytes, bool binary,
+    const std::function<std::optional<std::uint64_t>(std::string_view uri)>& external_size) {
     try {
         std::span<const std::uint8_t> json_bytes = bytes;
         std::optional<std::uint64_t> binary_chunk;
         if (binary) {
             if (bytes.size() < 20 || word_at(bytes, 0) != 0x46546C67U) throw Broken("is not a glTF binary file");
-            if (word_at(bytes, 4) != 2) throw Broken("is glTF " + std::to_string(word_at(bytes, 4)) + ".0 binary; raster reads glTF 2.0");
-            if (word_at(bytes, 8) > bytes.size()) throw Broken("claims " + std::to_string(word_at(bytes, 8)) + " bytes but holds " + std::to_string(bytes.size()));
+            if (word_at(bytes, 4) != 2)
+                throw Broken("is glTF " + std::to_string(word_at(bytes, 4)) + ".0 binary; raster reads glTF 2.0");
+            if (word_at(bytes, 8) > bytes.size())
+                throw Broken("claims " + std::to_string(word_at(bytes, 8)) + " bytes but holds " +
+                             std::to_string(bytes.size()));
             const std::size_t end = word_at(bytes, 8);
             for (std::size_t at = 12; at + 8 <= end;) {
                 const std::uint64_t length = word_at(bytes, at), type = word_at(bytes, at + 4);
-                if (length > end - at - 8) throw Broken("has a chunk of " + std::to_string(length) + " bytes that runs past its end");
+                if (length > end - at - 8)
+                    throw Broken("has a chunk of " + std::to_string(length) + " bytes that runs past its end");
                 if (at == 12 && type != 0x4E4F534AU) throw Broken("does not begin with its JSON chunk");
                 if (at == 12) json_bytes = bytes.subspan(at + 8, static_cast<std::size_t>(length));
                 if (at > 12 && type == 0x004E4942U && !binary_chunk) binary_chunk = length;
@@ -322,11 +356,13 @@ std::string gltf_structure_problem(std::span<const std::uint8_t> bytes, bool bin
             if (json_bytes.size() == bytes.size()) throw Broken("has no JSON chunk");
         }
         const std::string_view text(reinterpret_cast<const char*>(json_bytes.data()), json_bytes.size());
-        if (json_depth(text) > kMaxJsonDepth) throw Broken("its JSON nests more than " + std::to_string(kMaxJsonDepth) + " deep");
+        if (json_depth(text) > kMaxJsonDepth)
+            throw Broken("its JSON nests more than " + std::to_string(kMaxJsonDepth) + " deep");
         const Json root = Json::parse(text, nullptr, false);
         if (root.is_discarded() || !root.is_object()) throw Broken("its JSON does not parse as an object");
         const Json asset = root.value("asset", Json::object());
-        if (const auto version = asset.find("version"); version != asset.end() && version->is_string() && version->get<std::string>().starts_with("1")) {
+        if (const auto version = asset.find("version");
+            version != asset.end() && version->is_string() && version->get<std::string>().starts_with("1")) {
             throw Broken("is glTF " + version->get<std::string>().substr(0, 8) + "; raster reads glTF 2.0");
         }
         if (const auto buffers = root.find("buffers"); buffers != root.end() && buffers->is_object()) {
@@ -336,7 +372,8 @@ std::string gltf_structure_problem(std::span<const std::uint8_t> bytes, bool bin
         check_accessors(root, views);
         check_indices(root);
         check_node_graph(root);
-        for (const Json& image : array_of(root, "images")) index_at(image, "bufferView", views.size(), "an image", "buffer view");
+        for (const Json& image : array_of(root, "images"))
+            index_at(image, "bufferView", views.size(), "an image", "buffer view");
     } catch (const Broken& problem) {
         return problem.what();
     } catch (const Json::exception& problem) {

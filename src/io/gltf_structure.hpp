@@ -22,7 +22,8 @@ inline constexpr std::uint64_t kMaxGltfNodeInstances = std::uint64_t{1} << 18;
 // "" when the .gltf text or .glb file `bytes` holds together, else the first problem, as the end
 // of a sentence about the file. `external_size` gives the size of a buffer the file names by
 // URI, or nothing when it cannot be read (its reader says why later).
-[[nodiscard]] std::string gltf_structure_problem(std::span<const std::uint8_t> bytes, bool binary,
-                                                 const std::function<std::optional<std::uint64_t>(std::string_view uri)>& external_size);
+[[nodiscard]] std::string gltf_structure_problem(
+    std::span<const std::uint8_t> bytes, bool binary,
+    const std::function<std::optional<std::uint64_t>(std::string_view uri)>& external_size);
 
 }  // namespace raster::detail

@@ -33,13 +33,16 @@ Holders& holders() {
 // The holders on this thread: a nested holder never waits for the one around it.
 thread_local int held_on_this_thread = 0;
 
-bool ignored(const struct sigaction& action) { return (action.sa_flags & SA_SIGINFO) == 0 && action.sa_handler == SIG_IGN; }
+bool ignored(const struct sigaction& action) {
+    return (action.sa_flags & SA_SIGINFO) == 0 && action.sa_handler == SIG_IGN;
+}
 
 }  // namespace
 
 HeldSignals::HeldSignals(std::span<const int> signals) : signals_(signals.begin(), signals.end()) {
     for (const int signal : signals_) {
-        if (signal <= 0 || signal >= NSIG) throw std::invalid_argument("there is no signal " + std::to_string(signal) + " to hold");
+        if (signal <= 0 || signal >= NSIG)
+            throw std::invalid_argument("there is no signal " + std::to_string(signal) + " to hold");
     }
     Holders& shared = holders();
     std::unique_lock lock(shared.mutex);
@@ -70,7 +73,8 @@ HeldSignals::~HeldSignals() {
     const std::lock_guard lock(shared.mutex);
     --held_on_this_thread;
     for (const int signal : signals_) {
-        if (--shared.count[static_cast<std::size_t>(signal)] == 0) ::sigaction(signal, &shared.before[static_cast<std::size_t>(signal)], nullptr);
+        if (--shared.count[static_cast<std::size_t>(signal)] == 0)
+            ::sigaction(signal, &shared.before[static_cast<std::size_t>(signal)], nullptr);
     }
     // Raised with the lock held: no new holder starts before the signal has done what it does.
     for (const int signal : signals_) {

@@ -177,7 +177,8 @@ ImageHeader read_tga(Bytes bytes) {
 ImageHeader read_bmp(Bytes bytes) {
     if (!fits(bytes, 0, 18)) cut_short(ImageFormat::bmp);
     const std::uint32_t info_size = le32(bytes, 14);
-    if (!known_bmp_info_size(info_size)) broken(ImageFormat::bmp, "unknown info header size " + std::to_string(info_size));
+    if (!known_bmp_info_size(info_size))
+        broken(ImageFormat::bmp, "unknown info header size " + std::to_string(info_size));
     const bool core = info_size == 12;  // OS/2 core header: 16-bit unsigned sides, never compressed
     if (!fits(bytes, 0, core ? 26 : 34)) cut_short(ImageFormat::bmp);
     // Windows headers hold signed 32-bit sides; converted before the conditional, which would make them unsigned.
@@ -187,9 +188,11 @@ ImageHeader read_bmp(Bytes bytes) {
     const std::int64_t width = side(18, 18), height = side(20, 22);
     const std::uint32_t bits = le16(bytes, core ? 24 : 28);
     const std::uint32_t compression = core ? 0 : le32(bytes, 30);
-    if (compression == 1 || compression == 2) throw std::runtime_error("a compressed BMP (RLE); raster reads uncompressed BMP");
+    if (compression == 1 || compression == 2)
+        throw std::runtime_error("a compressed BMP (RLE); raster reads uncompressed BMP");
     if (compression != 0 && compression != 3) {
-        throw std::runtime_error("a compressed BMP (method " + std::to_string(compression) + "); raster reads uncompressed BMP");
+        throw std::runtime_error("a compressed BMP (method " + std::to_string(compression) +
+                                 "); raster reads uncompressed BMP");
     }
     if (bits != 1 && bits != 4 && bits != 8 && bits != 16 && bits != 24 && bits != 32) {
         throw std::runtime_error(header_of(ImageFormat::bmp) + " gives " + std::to_string(bits) + " bits per pixel");
@@ -198,7 +201,8 @@ ImageHeader read_bmp(Bytes bytes) {
     // Rows are padded to 4 bytes; dividing rather than multiplying keeps huge sizes from overflowing.
     const std::uint64_t stride = (static_cast<std::uint64_t>(header.width) * bits + 31) / 32 * 4;
     const std::uint64_t offset = le32(bytes, 10);
-    const bool whole = fits(bytes, 0, offset) && (bytes.size() - offset) / stride >= static_cast<std::uint64_t>(header.height);
+    const bool whole =
+        fits(bytes, 0, offset) && (bytes.size() - offset) / stride >= static_cast<std::uint64_t>(header.height);
     return {header.format, header.width, header.height, !whole};
 }
 

@@ -12,7 +12,7 @@ enum class ImageFormat { png, jpeg, tga, bmp, webp };
 
 struct ImageHeader {
     ImageFormat format;
-    int width;   // as the header says (may be huge: callers check limits)
+    int width;  // as the header says (may be huge: callers check limits)
     int height;
     bool truncated;  // the data ends before the header (or the format's structure) says it should
 };

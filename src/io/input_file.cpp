@@ -8,12 +8,12 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <fcntl.h>
 #include <stdexcept>
-#include <sys/stat.h>
 #include <system_error>
-#include <unistd.h>
 #include <utility>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace raster {
 namespace fs = std::filesystem;
@@ -44,7 +44,9 @@ FileIdentity identity_from(const struct stat& status) {
     return {static_cast<std::uint64_t>(status.st_dev), static_cast<std::uint64_t>(status.st_ino)};
 }
 
-std::string outside(const fs::path& root) { return "lies outside '" + printable(root.string()) + "', where reading is confined"; }
+std::string outside(const fs::path& root) {
+    return "lies outside '" + printable(root.string()) + "', where reading is confined";
+}
 
 // Finds `path` below the confinement root so that nothing outside it can be reached, not even
 // through a link or a directory swapped in after the check; an O_PATH descriptor, or -1.
@@ -83,7 +85,8 @@ int open_checked(int located, struct stat& before) {
 
 InputFile::InputFile(const fs::path& path, const InputRules& rules) : record_{path, {}, rules.role} {
     // Found with O_PATH, which opens nothing, so that the kind is known before the file is opened.
-    const int located = rules.confine.empty() ? ::open(path.c_str(), O_PATH | O_CLOEXEC) : locate_confined(path, rules.confine);
+    const int located =
+        rules.confine.empty() ? ::open(path.c_str(), O_PATH | O_CLOEXEC) : locate_confined(path, rules.confine);
     if (located < 0) refuse(reason_from_errno(errno));
     struct stat before {};
     try {
@@ -107,7 +110,8 @@ InputFile::InputFile(const fs::path& path, const InputRules& rules) : record_{pa
         if (file_flags >= 0) ::fcntl(descriptor_, F_SETFL, file_flags & ~O_NONBLOCK);
         if (rules.signature != nullptr) {
             const std::vector<std::uint8_t> head = read_head(rules.signature_bytes);
-            if (!rules.signature(head)) refuse(size_ == 0 ? "is empty, not " + rules.expected : "is not " + rules.expected);
+            if (!rules.signature(head))
+                refuse(size_ == 0 ? "is empty, not " + rules.expected : "is not " + rules.expected);
             rewind();
         }
     } catch (...) {
@@ -121,11 +125,13 @@ InputFile::~InputFile() {
 }
 
 InputFile::InputFile(InputFile&& other) noexcept
-    : descriptor_(std::exchange(other.descriptor_, -1)), size_(other.size_), position_(other.position_), record_(std::move(other.record_)) {}
+    : descriptor_(std::exchange(other.descriptor_, -1)), size_(other.size_), position_(other.position_),
+      record_(std::move(other.record_)) {}
 
 std::size_t InputFile::read_some(std::span<std::uint8_t> buffer) {
     // Never past the size seen at opening: a file that grows meanwhile is not read without end.
-    const std::size_t wanted = static_cast<std::size_t>(std::min<std::uintmax_t>(buffer.size(), size_ - std::min(position_, size_)));
+    const std::size_t wanted =
+        static_cast<std::size_t>(std::min<std::uintmax_t>(buffer.size(), size_ - std::min(position_, size_)));
     if (wanted == 0) return 0;
     for (;;) {
         const ::ssize_t got = ::read(descriptor_, buffer.data(), wanted);
@@ -197,7 +203,8 @@ public:
 private:
     void end_line(std::string_view piece) {
         if (partial_.size() + piece.size() > max_) {
-            refuse(name_ + ":" + std::to_string(number_) + ": a line longer than " + in_mib(max_) + ", the most raster reads in one line");
+            refuse(name_ + ":" + std::to_string(number_) + ": a line longer than " + in_mib(max_) +
+                   ", the most raster reads in one line");
         }
         if (partial_.empty()) {
             visit_(piece, number_);
@@ -224,7 +231,8 @@ void for_each_line(InputFile& file, const std::string& name, std::size_t max_lin
     file.rewind();
     LineSplitter lines(name, max_line_bytes, visit);
     std::vector<std::uint8_t> block(std::size_t{1} << 16);
-    for (std::size_t got; (got = file.read_some(block)) > 0;) lines.feed({reinterpret_cast<const char*>(block.data()), got});
+    for (std::size_t got; (got = file.read_some(block)) > 0;)
+        lines.feed({reinterpret_cast<const char*>(block.data()), got});
     lines.finish();
 }
 
@@ -235,7 +243,8 @@ void for_each_line(std::string_view text, const std::string& name, std::size_t m
     lines.finish();
 }
 
-std::vector<std::uint8_t> read_input_file(const fs::path& path, const InputRules& rules, std::vector<InputRecord>* sources) {
+std::vector<std::uint8_t> read_input_file(const fs::path& path, const InputRules& rules,
+                                          std::vector<InputRecord>* sources) {
     InputFile file(path, rules);
     std::vector<std::uint8_t> bytes = file.read_all();
     if (sources != nullptr) sources->push_back(file.record());
@@ -253,7 +262,8 @@ fs::path confinement_root(const fs::path& path) {
     std::error_code error;
     const fs::path root = fs::canonical(path, error);
     if (error) throw std::runtime_error("'" + printable(path.string()) + "' " + reason_from_errno(error.value()));
-    if (!fs::is_directory(root, error)) throw std::runtime_error("'" + printable(path.string()) + "' is not a directory");
+    if (!fs::is_directory(root, error))
+        throw std::runtime_error("'" + printable(path.string()) + "' is not a directory");
     return root;
 }
 
@@ -299,7 +309,8 @@ std::string printable(std::string_view text, std::size_t limit) {
         const std::string_view piece = text.substr(at, step);
         const auto lead = static_cast<unsigned char>(piece[0]);
         // C0 and C1 controls (U+0080-U+009F is C2 80-C2 9F) steer a terminal: CSI is C2 9B.
-        const bool control = lead < 0x20 || lead == 0x7f || (lead == 0xC2 && length == 2 && static_cast<unsigned char>(piece[1]) < 0xA0);
+        const bool control =
+            lead < 0x20 || lead == 0x7f || (lead == 0xC2 && length == 2 && static_cast<unsigned char>(piece[1]) < 0xA0);
         if (length == 0 || control) {
             append_escaped(shown, piece);
         } else {

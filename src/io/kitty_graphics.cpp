@@ -58,7 +58,8 @@ std::string base64(std::span<const std::uint8_t> bytes) {
 }
 
 std::optional<TerminalCells> display_cells(int width, int height, const TerminalWindow& window) {
-    if (width <= 0 || height <= 0 || window.columns <= 0 || window.rows <= 0 || window.width_px <= 0 || window.height_px <= 0) {
+    if (width <= 0 || height <= 0 || window.columns <= 0 || window.rows <= 0 || window.width_px <= 0 ||
+        window.height_px <= 0) {
         return std::nullopt;
     }
     const double cell_width = static_cast<double>(window.width_px) / window.columns;
@@ -94,7 +95,8 @@ std::string kitty_display(std::span<const std::uint8_t> png, std::optional<Termi
 
 std::string kitty_query(std::uint32_t id) {
     // AAAA: one black pixel, three bytes of RGB (f=24) sent directly (t=d).
-    return std::string(kApcStart) + "i=" + std::to_string(id) + ",s=1,v=1,a=q,t=d,f=24;AAAA" + std::string(kStringEnd) + "\x1b[c";
+    return std::string(kApcStart) + "i=" + std::to_string(id) + ",s=1,v=1,a=q,t=d,f=24;AAAA" + std::string(kStringEnd) +
+           "\x1b[c";
 }
 
 KittyAnswer read_kitty_answer(std::string_view answer, std::uint32_t id) {

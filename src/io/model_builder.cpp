@@ -62,7 +62,8 @@ std::vector<std::pair<int, Mesh>> meshes_by_material(const PolygonSoup& soup, do
         glm::dvec3 sum(0.0);
         for (const std::uint32_t other : neighbours) {
             // Area-weighted; in double, which float coordinates cannot overflow.
-            if (glm::dot(unit[other], unit[t]) >= cos_crease) sum += glm::dvec3(unit[other]) * glm::length(weighted[other]);
+            if (glm::dot(unit[other], unit[t]) >= cos_crease)
+                sum += glm::dvec3(unit[other]) * glm::length(weighted[other]);
         }
         const glm::vec3 mean = unit_of(sum);
         return mean == glm::vec3(0.0F) ? unit[t] : mean;
@@ -89,15 +90,20 @@ std::vector<std::pair<int, Mesh>> meshes_by_material(const PolygonSoup& soup, do
             glm::vec3 normal(0.0F);  // the file's, unless it has none or a zero or broken one
             if (corner.normal != kNoIndex) normal = unit_or_zero(soup.normals[static_cast<std::size_t>(corner.normal)]);
             if (normal == glm::vec3(0.0F)) normal = generated_normal(t, corner.position);
-            const VertexKey key{corner.position, bits_of(normal.x), bits_of(normal.y), bits_of(normal.z), corner.uv, corner.colour};
+            const VertexKey key{corner.position,   bits_of(normal.x), bits_of(normal.y),
+                                bits_of(normal.z), corner.uv,         corner.colour};
             const auto [at, added] = index_of.try_emplace(key, static_cast<std::uint32_t>(mesh.positions.size()));
             if (added) {
                 mesh.positions.push_back(soup.positions[static_cast<std::size_t>(corner.position)]);
                 mesh.normals.push_back(normal);
-                if (with_uvs) mesh.uvs.push_back(corner.uv != kNoIndex ? soup.uvs[static_cast<std::size_t>(corner.uv)] : glm::vec2(0.0F));
+                if (with_uvs)
+                    mesh.uvs.push_back(corner.uv != kNoIndex ? soup.uvs[static_cast<std::size_t>(corner.uv)]
+                                                             : glm::vec2(0.0F));
                 // A corner without a colour in a part with colours shows the material as it is.
                 if (with_colours) {
-                    mesh.colours.push_back(corner.colour != kNoIndex ? soup.colours[static_cast<std::size_t>(corner.colour)] : LinearRgb{1.0F, 1.0F, 1.0F});
+                    mesh.colours.push_back(corner.colour != kNoIndex
+                                               ? soup.colours[static_cast<std::size_t>(corner.colour)]
+                                               : LinearRgb{1.0F, 1.0F, 1.0F});
                 }
             }
             facet.corners[k] = at->second;

@@ -33,7 +33,8 @@ Model read_model_here(const std::filesystem::path& path, const ObjOptions& optio
     } catch (const std::runtime_error& problem) {
         throw std::runtime_error(name + ": " + problem.what());
     }
-    if (const std::string problem = content_problem(format, head, size); !problem.empty()) throw std::runtime_error(name + ": " + problem);
+    if (const std::string problem = content_problem(format, head, size); !problem.empty())
+        throw std::runtime_error(name + ": " + problem);
     return format == ModelFormat::obj ? read_obj(path, options) : read_scene_file(path, options);
 }
 
@@ -41,8 +42,10 @@ Model read_model_here(const std::filesystem::path& path, const ObjOptions& optio
 
 Model read_model(const std::filesystem::path& path, const ObjOptions& options) {
     const std::string reader = detail::reader_name(path);  // an unknown ending is refused here, before any fork
-    if (options.limits.separate_process && options.limits.service != nullptr) return options.limits.service->read(path, options);
-    return detail::read_in_child([&] { return detail::read_model_here(path, options); }, printable(path.string()), reader, options.limits);
+    if (options.limits.separate_process && options.limits.service != nullptr)
+        return options.limits.service->read(path, options);
+    return detail::read_in_child([&] { return detail::read_model_here(path, options); }, printable(path.string()),
+                                 reader, options.limits);
 }
 
 }  // namespace raster

@@ -13,7 +13,9 @@
 namespace raster::detail {
 namespace {
 
-std::string_view text_of(std::span<const std::uint8_t> head) { return {reinterpret_cast<const char*>(head.data()), head.size()}; }
+std::string_view text_of(std::span<const std::uint8_t> head) {
+    return {reinterpret_cast<const char*>(head.data()), head.size()};
+}
 
 // The head after an optional UTF-8 byte order mark and leading white space.
 std::string_view trimmed(std::string_view text) {
@@ -23,8 +25,9 @@ std::string_view trimmed(std::string_view text) {
 }
 
 bool starts_without_case(std::string_view text, std::string_view prefix) {
-    return text.size() >= prefix.size() &&
-           std::equal(prefix.begin(), prefix.end(), text.begin(), [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == std::tolower(static_cast<unsigned char>(b)); });
+    return text.size() >= prefix.size() && std::equal(prefix.begin(), prefix.end(), text.begin(), [](char a, char b) {
+               return std::tolower(static_cast<unsigned char>(a)) == std::tolower(static_cast<unsigned char>(b));
+           });
 }
 
 // A binary STL: an 80-byte header, a triangle count, and 50 bytes for each triangle.
@@ -54,7 +57,7 @@ std::string what_it_looks_like(std::span<const std::uint8_t> head, std::uintmax_
         {"RIFF", "a RIFF file (a WebP image?)"},
         {"\x1F\x8B", "a gzip archive"},
         {"%PDF", "a PDF document"},
-        {"\x7F" "ELF", "a program"},
+        {"\177ELF", "a program"},
         {"OFF", "an OFF model"},
     }};
     for (const auto& [magic, name] : kMagic) {
@@ -65,7 +68,8 @@ std::string what_it_looks_like(std::span<const std::uint8_t> head, std::uintmax_
     if (starts_without_case(text, "solid")) return "an ASCII STL model";
     if (text.starts_with("{")) return "JSON (a glTF model?)";
     if (text.starts_with("<")) return "XML (a Collada, AMF or X3D model?)";
-    if (raw.size() >= 2 && static_cast<unsigned char>(raw[0]) == 0x4D && static_cast<unsigned char>(raw[1]) == 0x4D) return "a 3DS model";
+    if (raw.size() >= 2 && static_cast<unsigned char>(raw[0]) == 0x4D && static_cast<unsigned char>(raw[1]) == 0x4D)
+        return "a 3DS model";
     if (std::find(raw.begin(), raw.end(), '\0') != raw.end()) return "binary data";
     return "";
 }
@@ -74,13 +78,15 @@ std::string what_it_looks_like(std::span<const std::uint8_t> head, std::uintmax_
 
 ModelFormat model_format_of(const std::filesystem::path& path) {
     std::string ending = path.extension().string();
-    std::transform(ending.begin(), ending.end(), ending.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    std::transform(ending.begin(), ending.end(), ending.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     if (ending == ".obj") return ModelFormat::obj;
     if (ending == ".gltf") return ModelFormat::gltf;
     if (ending == ".glb") return ModelFormat::glb;
     if (ending == ".stl") return ModelFormat::stl;
     if (ending == ".ply") return ModelFormat::ply;
-    throw std::runtime_error(printable(path.string()) + ": raster reads models ending in .obj, .gltf, .glb, .stl or .ply");
+    throw std::runtime_error(printable(path.string()) +
+                             ": raster reads models ending in .obj, .gltf, .glb, .stl or .ply");
 }
 
 std::string format_name(ModelFormat format) {

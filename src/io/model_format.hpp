@@ -23,6 +23,7 @@ inline constexpr std::size_t kSignatureBytes = 96;
 
 // "" when the first bytes of a file of `file_size` bytes fit `format`, else one line saying
 // what they look like instead: "looks like an OFF model, not glTF binary".
-[[nodiscard]] std::string content_problem(ModelFormat format, std::span<const std::uint8_t> head, std::uintmax_t file_size);
+[[nodiscard]] std::string content_problem(ModelFormat format, std::span<const std::uint8_t> head,
+                                          std::uintmax_t file_size);
 
 }  // namespace raster::detail

@@ -55,9 +55,11 @@ std::size_t model_wire_size(const Model& model) noexcept {
     std::map<const Texture*, bool> counted;
     for (const ModelPart& part : model.parts) {
         const Mesh& m = part.mesh;
-        size += 256 + part.material_name.size() + m.positions.size() * sizeof(glm::vec3) + m.normals.size() * sizeof(glm::vec3) +
-                m.facets.size() * sizeof(Facet) + m.uvs.size() * sizeof(glm::vec2) + m.colours.size() * sizeof(LinearRgb);
-        if (part.texture && counted.emplace(part.texture.get(), true).second) size += 64 + part.texture->level(0).bytes().size() * 4 / 3 + 64 * part.texture->level_count();
+        size += 256 + part.material_name.size() + m.positions.size() * sizeof(glm::vec3) +
+                m.normals.size() * sizeof(glm::vec3) + m.facets.size() * sizeof(Facet) +
+                m.uvs.size() * sizeof(glm::vec2) + m.colours.size() * sizeof(LinearRgb);
+        if (part.texture && counted.emplace(part.texture.get(), true).second)
+            size += 64 + part.texture->level(0).bytes().size() * 4 / 3 + 64 * part.texture->level_count();
     }
     for (const std::string& warning : model.warnings) size += 8 + warning.size();
     for (const InputRecord& source : model.sources) size += 64 + source.path.native().size() + source.role.size();
@@ -121,7 +123,9 @@ Model model_from_wire(std::span<const std::uint8_t> bytes) {
             const auto width = wire.value<int>();
             const auto height = wire.value<int>();
             std::vector<std::uint8_t> rgb = wire.array<std::uint8_t>();
-            if (width <= 0 || height <= 0 || rgb.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3) WireReader::broken();
+            if (width <= 0 || height <= 0 ||
+                rgb.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3)
+                WireReader::broken();
             levels.emplace_back(width, height, std::move(rgb));
         }
         try {
@@ -149,7 +153,9 @@ Model model_from_wire(std::span<const std::uint8_t> bytes) {
         }
         const auto filter = wire.value<std::uint8_t>();
         const auto wrap = wire.value<std::uint8_t>();
-        if (filter > static_cast<std::uint8_t>(TextureFilter::trilinear) || wrap > static_cast<std::uint8_t>(TextureWrap::clamp)) WireReader::broken();
+        if (filter > static_cast<std::uint8_t>(TextureFilter::trilinear) ||
+            wrap > static_cast<std::uint8_t>(TextureWrap::clamp))
+            WireReader::broken();
         part.sampler = {static_cast<TextureFilter>(filter), static_cast<TextureWrap>(wrap)};
         model.parts.push_back(std::move(part));
     }

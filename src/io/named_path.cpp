@@ -36,7 +36,8 @@ fs::path entry_ignoring_case(const fs::path& folder, const std::string& part) {
     std::error_code error;
     fs::path found;
     int scanned = 0;
-    for (fs::directory_iterator it(folder.empty() ? fs::path(".") : folder, error), end; !error && it != end; it.increment(error)) {
+    for (fs::directory_iterator it(folder.empty() ? fs::path(".") : folder, error), end; !error && it != end;
+         it.increment(error)) {
         if (++scanned > kMaxEntriesScanned) return {};
         const std::string name = it->path().filename().string();
         if (!same_ignoring_case(name, part)) continue;
@@ -52,7 +53,8 @@ fs::path resolve_named_path(const fs::path& directory, std::string_view written,
     const fs::path as_written = directory / fs::path(std::string(written));
     if (present(as_written)) return as_written;
     std::string text(written);
-    if (text.size() >= 2 && (text.front() == '"' || text.front() == '\'') && text.back() == text.front()) text = text.substr(1, text.size() - 2);
+    if (text.size() >= 2 && (text.front() == '"' || text.front() == '\'') && text.back() == text.front())
+        text = text.substr(1, text.size() - 2);
     std::replace(text.begin(), text.end(), '\\', '/');
     const fs::path relative(text);
     if (relative.empty()) return as_written;

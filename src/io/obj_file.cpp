@@ -1,11 +1,11 @@
 // The only file that includes tinyobjloader; stays whole so that the library stays in one room.
 #include <raster/io/obj_file.hpp>
 
+#include "geometry/polygon_triangles.hpp"
 #include "io/input_stream.hpp"
 #include "io/model_builder.hpp"
 #include "io/named_path.hpp"
 #include "io/obj_survey.hpp"
-#include "geometry/polygon_triangles.hpp"
 
 #include <raster/io/input_file.hpp>
 
@@ -14,12 +14,12 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
-#include <unordered_set>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <system_error>
+#include <unordered_set>
 #include <vector>
 #include <tiny_obj_loader.h>
 
@@ -37,10 +37,11 @@ struct BadModel : std::runtime_error {
 bool not_binary(std::span<const std::uint8_t> head) {
     const auto starts = [&](std::string_view magic) {
         return head.size() >= magic.size() &&
-               std::equal(magic.begin(), magic.end(), head.begin(), [](char m, std::uint8_t b) { return static_cast<std::uint8_t>(m) == b; });
+               std::equal(magic.begin(), magic.end(), head.begin(),
+                          [](char m, std::uint8_t b) { return static_cast<std::uint8_t>(m) == b; });
     };
     return !(starts("\x89PNG") || starts("\xFF\xD8\xFF") || starts("GIF8") || starts("RIFF") || starts("glTF") ||
-             starts("PK\x03\x04") || starts("\x7F" "ELF"));
+             starts("PK\x03\x04") || starts("\177ELF"));
 }
 
 InputRules text_rules(std::string role, std::string expected, const std::filesystem::path& confine) {
@@ -65,11 +66,13 @@ class MaterialLibraries final : public tinyobj::MaterialReader {
 public:
     MaterialLibraries(std::filesystem::path directory, std::optional<std::string_view> text, std::string obj_name,
                       const detail::ObjSurvey& survey, const ObjOptions& options)
-        : directory_(std::move(directory)), text_(text), obj_name_(std::move(obj_name)), survey_(survey), options_(options) {}
+        : directory_(std::move(directory)), text_(text), obj_name_(std::move(obj_name)), survey_(survey),
+          options_(options) {}
 
-    bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials, std::map<std::string, int>* names,
-                    std::string*, std::string*) override {
-        const std::filesystem::path path = text_ ? directory_ / name : detail::resolve_named_path(directory_, name, options_.confine);
+    bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
+                    std::map<std::string, int>* names, std::string*, std::string*) override {
+        const std::filesystem::path path =
+            text_ ? directory_ / name : detail::resolve_named_path(directory_, name, options_.confine);
         std::string ignored_warnings, ignored_errors;  // LoadMtl's only warning is about d and Tr, both read anyway
         if (text_) {
             std::istringstream in{std::string(*text_)};
@@ -86,21 +89,26 @@ public:
             } catch (const std::runtime_error& problem) {
                 if (failures_++ > 0) return false;  // one warning for the first; the count for the rest
                 const auto line = survey_.library_lines.find(name);
-                const std::string at = obj_name_ + (line != survey_.library_lines.end() ? ":" + std::to_string(line->second) : "") + ": ";
+                const std::string at =
+                    obj_name_ + (line != survey_.library_lines.end() ? ":" + std::to_string(line->second) : "") + ": ";
                 const std::string what = problem.what(), shown = printable(path.string());
                 // A line-cap refusal already names the library and its line.
-                first_failure_ = at + (what.starts_with(shown + ":") ? what : "material library '" + shown + "' " + what);
+                first_failure_ =
+                    at + (what.starts_with(shown + ":") ? what : "material library '" + shown + "' " + what);
                 return false;
             }
         }
         directories_.resize(materials->size(), path.parent_path());
         return true;
     }
-    [[nodiscard]] const std::filesystem::path& directory_of(std::size_t material) const { return directories_.at(material); }
+    [[nodiscard]] const std::filesystem::path& directory_of(std::size_t material) const {
+        return directories_.at(material);
+    }
     // At most one warning, however many libraries failed.
     [[nodiscard]] std::vector<std::string> warnings() const {
         if (failures_ == 0) return {};
-        const std::string more = failures_ > 1 ? " (and " + std::to_string(failures_ - 1) + " more material libraries)" : "";
+        const std::string more =
+            failures_ > 1 ? " (and " + std::to_string(failures_ - 1) + " more material libraries)" : "";
         return {first_failure_ + more + "; drawing the default material"};
     }
     [[nodiscard]] std::vector<InputRecord>& sources() noexcept { return sources_; }
@@ -122,8 +130,8 @@ private:
 std::int64_t checked(int index, std::size_t count, const char* what, std::size_t face, bool optional) {
     if (index < 0 && optional) return detail::kNoIndex;
     if (index < 0 || static_cast<std::size_t>(index) >= count) {
-        throw BadModel("face " + std::to_string(face + 1) + " names " + what + " " + std::to_string(index + 1) + ", but the file has " +
-                       std::to_string(count));
+        throw BadModel("face " + std::to_string(face + 1) + " names " + what + " " + std::to_string(index + 1) +
+                       ", but the file has " + std::to_string(count));
     }
     return index;
 }
@@ -139,7 +147,8 @@ detail::PolygonSoup soup_from(const tinyobj::attrib_t& attrib, const std::vector
     for (std::size_t i = 0; i + 2 < attrib.normals.size(); i += 3) {
         soup.normals.emplace_back(attrib.normals[i], attrib.normals[i + 1], -attrib.normals[i + 2]);
     }
-    for (std::size_t i = 0; i + 1 < attrib.texcoords.size(); i += 2) soup.uvs.emplace_back(attrib.texcoords[i], attrib.texcoords[i + 1]);
+    for (std::size_t i = 0; i + 1 < attrib.texcoords.size(); i += 2)
+        soup.uvs.emplace_back(attrib.texcoords[i], attrib.texcoords[i + 1]);
     std::size_t face = 0;
     auto large = survey.large_faces.begin();
     std::vector<detail::SoupCorner> corners;
@@ -148,7 +157,8 @@ detail::PolygonSoup soup_from(const tinyobj::attrib_t& attrib, const std::vector
         std::size_t next = 0;
         for (std::size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f, ++face) {
             std::size_t count = shape.mesh.num_face_vertices[f];
-            if (large != survey.large_faces.end() && large->first == face) count = (large++)->second;  // the survey counted them whole
+            if (large != survey.large_faces.end() && large->first == face)
+                count = (large++)->second;  // the survey counted them whole
             const std::size_t first = next;
             next += count;
             if (next > shape.mesh.indices.size()) throw BadModel("face " + std::to_string(face + 1) + " is cut short");
@@ -160,11 +170,13 @@ detail::PolygonSoup soup_from(const tinyobj::attrib_t& attrib, const std::vector
             outline.clear();
             for (std::size_t k = first; k < next; ++k) {
                 const tinyobj::index_t& index = shape.mesh.indices[k];
-                const detail::SoupCorner corner{checked(index.vertex_index, soup.positions.size(), "vertex", face, false),
-                                                checked(index.normal_index, soup.normals.size(), "normal", face, true),
-                                                checked(index.texcoord_index, soup.uvs.size(), "texture coordinate", face, true)};
+                const detail::SoupCorner corner{
+                    checked(index.vertex_index, soup.positions.size(), "vertex", face, false),
+                    checked(index.normal_index, soup.normals.size(), "normal", face, true),
+                    checked(index.texcoord_index, soup.uvs.size(), "texture coordinate", face, true)};
                 const glm::vec3& p = soup.positions[static_cast<std::size_t>(corner.position)];
-                if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {  // the survey refuses these first
+                if (!std::isfinite(p.x) || !std::isfinite(p.y) ||
+                    !std::isfinite(p.z)) {  // the survey refuses these first
                     throw BadModel("vertex " + std::to_string(corner.position + 1) + " is not a finite point");
                 }
                 corners.push_back(corner);
@@ -226,8 +238,10 @@ void warn_of_missing_materials(Model& model, const std::string& name, const deta
         if (missing++ == 0) first = &used;
     }
     if (first == nullptr) return;
-    const std::string more = missing > 1 ? " (nor " + std::to_string(missing - 1) + " more materials the faces use)" : "";
-    model.warnings.push_back(name + ":" + std::to_string(first->line) + ": material '" + printable(first->name, 80) + "' " +
+    const std::string more =
+        missing > 1 ? " (nor " + std::to_string(missing - 1) + " more materials the faces use)" : "";
+    model.warnings.push_back(name + ":" + std::to_string(first->line) + ": material '" + printable(first->name, 80) +
+                             "' " +
                              (survey.library_lines.empty() ? "is used, but the file names no material library"
                                                            : "is in none of the file's material libraries") +
                              more + "; drawing the default material");
@@ -236,17 +250,19 @@ void warn_of_missing_materials(Model& model, const std::string& name, const deta
 // tinyobjloader must have read the statements the survey checked, no more and no fewer: a
 // disagreement would leave a number unchecked.
 void check_same_reading(const tinyobj::attrib_t& attrib, const detail::ObjSurvey& survey) {
-    const std::array<std::size_t, 3> read = {attrib.vertices.size() / 3, attrib.texcoords.size() / 2, attrib.normals.size() / 3};
+    const std::array<std::size_t, 3> read = {attrib.vertices.size() / 3, attrib.texcoords.size() / 2,
+                                             attrib.normals.size() / 3};
     if (read != survey.defined) {
-        throw std::runtime_error("the file's v, vt and vn lines were counted as " + std::to_string(survey.defined[0]) + ", " +
-                                 std::to_string(survey.defined[1]) + " and " + std::to_string(survey.defined[2]) + " by one reading and " +
-                                 std::to_string(read[0]) + ", " + std::to_string(read[1]) + " and " + std::to_string(read[2]) +
+        throw std::runtime_error("the file's v, vt and vn lines were counted as " + std::to_string(survey.defined[0]) +
+                                 ", " + std::to_string(survey.defined[1]) + " and " +
+                                 std::to_string(survey.defined[2]) + " by one reading and " + std::to_string(read[0]) +
+                                 ", " + std::to_string(read[1]) + " and " + std::to_string(read[2]) +
                                  " by the other; please report this file");
     }
 }
 
-Model model_from(std::istream& obj, const std::string& name, const detail::ObjSurvey& survey, MaterialLibraries& libraries,
-                 const ObjOptions& options, bool load_maps) {
+Model model_from(std::istream& obj, const std::string& name, const detail::ObjSurvey& survey,
+                 MaterialLibraries& libraries, const ObjOptions& options, bool load_maps) {
     tinyobj::attrib_t attrib;
     std::vector<tinyobj::shape_t> shapes;
     std::vector<tinyobj::material_t> materials;
@@ -264,7 +280,8 @@ Model model_from(std::istream& obj, const std::string& name, const detail::ObjSu
     std::size_t dropped_again = 0;
     const detail::PolygonSoup soup = soup_from(attrib, shapes, survey, dropped_again);
     skipped = std::max(skipped, dropped_again);
-    if (skipped > 0) model.warnings.push_back(name + ": skipped " + std::to_string(skipped) + " faces with fewer than 3 corners");
+    if (skipped > 0)
+        model.warnings.push_back(name + ": skipped " + std::to_string(skipped) + " faces with fewer than 3 corners");
     std::map<std::filesystem::path, std::shared_ptr<const Texture>> loaded;  // by canonical path: each file read once
     std::size_t texels = 0;
     bool translucent = false;
@@ -278,28 +295,33 @@ Model model_from(std::istream& obj, const std::string& name, const detail::ObjSu
             part.sampler.wrap = m.diffuse_texopt.clamp ? TextureWrap::clamp : TextureWrap::repeat;
             const std::string material = "material '" + printable(m.name) + "'";
             if (!m.diffuse_texname.empty() && load_maps) {
-                const std::filesystem::path given =
-                    detail::resolve_named_path(libraries.directory_of(static_cast<std::size_t>(id)), m.diffuse_texname, options.confine);
+                const std::filesystem::path given = detail::resolve_named_path(
+                    libraries.directory_of(static_cast<std::size_t>(id)), m.diffuse_texname, options.confine);
                 std::error_code error;
                 std::filesystem::path map = std::filesystem::weakly_canonical(given, error);
                 if (error) map = given;
                 note_named(model.sources, given, "texture");
                 if (part.mesh.uvs.empty()) {
-                    model.warnings.push_back(name + ": " + material + " has a map but its faces have no texture coordinates; drawing its colour");
+                    model.warnings.push_back(
+                        name + ": " + material +
+                        " has a map but its faces have no texture coordinates; drawing its colour");
                 } else if (const auto found = loaded.find(map); found != loaded.end()) {
                     part.texture = found->second;
                 } else {
                     try {
                         const std::size_t left = kMaxModelTexels - texels;
                         if (left == 0) {
-                            throw std::runtime_error(printable(given.string()) + ": the model's textures already hold " +
+                            throw std::runtime_error(printable(given.string()) +
+                                                     ": the model's textures already hold " +
                                                      std::to_string(kMaxModelTexels) + " texels");
                         }
                         part.texture = std::make_shared<const Texture>(
                             read_texture(given, std::min(options.max_texels, left), options.confine, &model.sources));
-                        texels += static_cast<std::size_t>(part.texture->width()) * static_cast<std::size_t>(part.texture->height());
+                        texels += static_cast<std::size_t>(part.texture->width()) *
+                                  static_cast<std::size_t>(part.texture->height());
                     } catch (const std::runtime_error& problem) {
-                        model.warnings.push_back(std::string(problem.what()) + "; drawing " + material + " in its colour");
+                        model.warnings.push_back(std::string(problem.what()) + "; drawing " + material +
+                                                 " in its colour");
                     }
                     loaded.emplace(map, part.texture);
                 }
@@ -307,7 +329,8 @@ Model model_from(std::istream& obj, const std::string& name, const detail::ObjSu
         }
         model.parts.push_back(std::move(part));
     }
-    if (translucent) model.warnings.push_back(name + ": transparency (d below 1) is not supported; drawing those materials opaque");
+    if (translucent)
+        model.warnings.push_back(name + ": transparency (d below 1) is not supported; drawing those materials opaque");
     // One line per distinct warning, however often the file repeats its cause.
     std::vector<std::string> distinct;
     std::unordered_set<std::string> seen;
@@ -317,12 +340,15 @@ Model model_from(std::istream& obj, const std::string& name, const detail::ObjSu
     model.warnings = std::move(distinct);
     if (model.parts.empty() && !soup.triangles.empty()) {
         float farthest = 0.0F;
-        for (const glm::vec3& p : soup.positions) farthest = std::max({farthest, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+        for (const glm::vec3& p : soup.positions)
+            farthest = std::max({farthest, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
         // 32-bit floats keep about 7 digits: far from the origin, a small face collapses to a line.
         char hint[160] = "";
         if (farthest >= 65536.0F) {
-            std::snprintf(hint, sizeof hint, " (stored as 32-bit floats, coordinates near %.0e step by %g: move the model nearer the origin)",
-                          static_cast<double>(farthest), static_cast<double>(std::nextafter(farthest, HUGE_VALF) - farthest));
+            std::snprintf(
+                hint, sizeof hint,
+                " (stored as 32-bit floats, coordinates near %.0e step by %g: move the model nearer the origin)",
+                static_cast<double>(farthest), static_cast<double>(std::nextafter(farthest, HUGE_VALF) - farthest));
         }
         throw BadModel(std::string("every face has no area") + hint);
     }

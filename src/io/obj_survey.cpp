@@ -62,7 +62,8 @@ std::string number_problem(std::string_view word) {
         if (std::abs(value) <= 1.0) return "";
     }
     if (!std::isfinite(value)) return quoted + ", which is not a finite number";
-    if (std::abs(value) > std::numeric_limits<float>::max()) return quoted + ", which is beyond the largest coordinate raster stores";
+    if (std::abs(value) > std::numeric_limits<float>::max())
+        return quoted + ", which is beyond the largest coordinate raster stores";
     return "";
 }
 
@@ -78,8 +79,8 @@ std::size_t resolved_index(std::string_view text, std::size_t defined, Kind kind
     if (value == 0) throw std::runtime_error(at + what + " index 0: OBJ counts from 1");
     const long long resolved = value > 0 ? value : static_cast<long long>(defined) + value + 1;
     if (resolved < 1 || resolved > static_cast<long long>(defined)) {
-        throw std::runtime_error(at + "face names " + what + " " + std::to_string(value) + ", but " + std::to_string(defined) +
-                                 (defined == 1 ? " is" : " are") + " defined before it");
+        throw std::runtime_error(at + "face names " + what + " " + std::to_string(value) + ", but " +
+                                 std::to_string(defined) + (defined == 1 ? " is" : " are") + " defined before it");
     }
     return static_cast<std::size_t>(resolved - 1);
 }
@@ -102,23 +103,29 @@ ObjSurvey survey_obj(const std::string& name, std::size_t max_corners,
     std::size_t empty_mtllib_line = 0, empty_mtllib_count = 0;
     const auto check_used = [&](Kind kind, std::size_t index, const std::string& at) {
         auto& list = bad[kind];
-        const auto found = std::lower_bound(list.begin(), list.end(), index, [](const BadNumber& b, std::size_t i) { return b.index < i; });
+        const auto found = std::lower_bound(list.begin(), list.end(), index,
+                                            [](const BadNumber& b, std::size_t i) { return b.index < i; });
         if (found == list.end() || found->index != index) return;
-        throw std::runtime_error(at + "the face uses " + kKindName[kind] + " " + std::to_string(index + 1) + ", but line " +
-                                 std::to_string(found->line) + " gives it " + found->problem);
+        throw std::runtime_error(at + "the face uses " + kKindName[kind] + " " + std::to_string(index + 1) +
+                                 ", but line " + std::to_string(found->line) + " gives it " + found->problem);
     };
     lines([&](std::string_view line, std::size_t number) {
         if (number == 1 && line.starts_with("\xEF\xBB\xBF")) line.remove_prefix(3);  // a UTF-8 byte order mark
         const std::string_view keyword = keyword_of(line);
-        const auto kind = keyword == "v" ? kPosition : keyword == "vt" ? kUv : keyword == "vn" ? kNormal : std::size_t{3};
+        const auto kind = keyword == "v"    ? kPosition
+                          : keyword == "vt" ? kUv
+                          : keyword == "vn" ? kNormal
+                                            : std::size_t{3};
         if (keyword.empty() || (kind == 3 && keyword != "f" && keyword != "mtllib" && keyword != "usemtl")) return;
         const std::vector<std::string_view> words = words_of(line);
         const std::string at = name + ":" + std::to_string(number) + ": ";
         if (kind < 3) {
             std::string problem;
-            for (std::size_t w = 1; w < words.size() && w <= kUsedNumbers[kind] && problem.empty(); ++w) problem = number_problem(words[w]);
+            for (std::size_t w = 1; w < words.size() && w <= kUsedNumbers[kind] && problem.empty(); ++w)
+                problem = number_problem(words[w]);
             if (problem.empty() && words.size() - 1 < kNeededNumbers[kind]) {
-                problem = "only " + std::to_string(words.size() - 1) + " of its " + std::to_string(kNeededNumbers[kind]) + " coordinates";
+                problem = "only " + std::to_string(words.size() - 1) + " of its " +
+                          std::to_string(kNeededNumbers[kind]) + " coordinates";
             }
             if (!problem.empty()) bad[kind].push_back({survey.defined[kind], number, std::move(problem)});
             ++survey.defined[kind];
@@ -135,14 +142,16 @@ ObjSurvey survey_obj(const std::string& name, std::size_t max_corners,
                 std::size_t count = 0;
                 for (std::size_t start = 0; count < 3; ++count) {
                     const std::size_t slash = corner.find('/', start);
-                    fields[count] = corner.substr(start, slash == std::string_view::npos ? std::string_view::npos : slash - start);
+                    fields[count] =
+                        corner.substr(start, slash == std::string_view::npos ? std::string_view::npos : slash - start);
                     if (slash == std::string_view::npos) break;
                     start = slash + 1;
                 }
                 const bool well_formed = count < 3 && !fields[0].empty() && (count != 1 || !fields[1].empty()) &&
                                          (count != 2 || !fields[2].empty());
                 if (!well_formed) {
-                    throw std::runtime_error(at + "corner '" + printable(corner, 40) + "' is not of the form v, v/vt, v/vt/vn or v//vn");
+                    throw std::runtime_error(at + "corner '" + printable(corner, 40) +
+                                             "' is not of the form v, v/vt, v/vt/vn or v//vn");
                 }
                 for (std::size_t k = 0; k <= count; ++k) {
                     if (fields[k].empty()) continue;  // v//vn
@@ -159,16 +168,19 @@ ObjSurvey survey_obj(const std::string& name, std::size_t max_corners,
     });
     if (empty_mtllib_count > 0) {
         survey.warnings.push_back(name + ":" + std::to_string(empty_mtllib_line) + ": mtllib names no file" +
-                                  (empty_mtllib_count > 1 ? " (nor do " + std::to_string(empty_mtllib_count - 1) + " more mtllib lines)" : ""));
+                                  (empty_mtllib_count > 1
+                                       ? " (nor do " + std::to_string(empty_mtllib_count - 1) + " more mtllib lines)"
+                                       : ""));
     }
     // One warning per kind, however many lines repeat its cause.
     for (std::size_t kind = 0; kind < 3; ++kind) {
         if (bad[kind].empty()) continue;  // a face using one would have thrown
         const BadNumber& first = bad[kind].front();
         const std::size_t more = bad[kind].size() - 1;
-        survey.warnings.push_back(name + ":" + std::to_string(first.line) + ": " + kKindName[kind] + " " + std::to_string(first.index + 1) +
-                                  " has " + first.problem + "; no face uses it" +
-                                  (more > 0 ? " (nor " + std::to_string(more) + " more such " + kKindPlural[kind] + ")" : ""));
+        survey.warnings.push_back(
+            name + ":" + std::to_string(first.line) + ": " + kKindName[kind] + " " + std::to_string(first.index + 1) +
+            " has " + first.problem + "; no face uses it" +
+            (more > 0 ? " (nor " + std::to_string(more) + " more such " + kKindPlural[kind] + ")" : ""));
     }
     return survey;
 }

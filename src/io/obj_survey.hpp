@@ -21,12 +21,12 @@ struct NamedAt {
 };
 
 struct ObjSurvey {
-    std::vector<std::string> warnings;  // each "FILE:LINE: ...", at most one per cause
-    std::unordered_map<std::string, std::size_t> library_lines;        // mtllib names, first line of each
-    std::unordered_map<std::string, std::size_t> material_lines;      // usemtl names, first line of each
-    std::vector<NamedAt> materials;     // usemtl names in order of first use
+    std::vector<std::string> warnings;                            // each "FILE:LINE: ...", at most one per cause
+    std::unordered_map<std::string, std::size_t> library_lines;   // mtllib names, first line of each
+    std::unordered_map<std::string, std::size_t> material_lines;  // usemtl names, first line of each
+    std::vector<NamedAt> materials;                               // usemtl names in order of first use
     std::array<std::size_t, 3> defined{};  // v, vt and vn statements, as tinyobjloader counts them
-    std::size_t skipped_faces = 0;      // faces of fewer than 3 corners
+    std::size_t skipped_faces = 0;         // faces of fewer than 3 corners
     // Faces of 256 corners or more, as (index among faces of 3 or more, corners): tinyobjloader
     // keeps a face's corner count in one byte, so these are the counts it gets wrong.
     std::vector<std::pair<std::size_t, std::size_t>> large_faces;
@@ -36,7 +36,8 @@ struct ObjSurvey {
 // Checks one OBJ text line by line (`lines` calls its visitor with each line and its number):
 // faces must name, by v, v/vt, v/vt/vn or v//vn, only finite coordinates defined before them,
 // with at most `max_corners` corners. Throws std::runtime_error "NAME:LINE: ..." otherwise.
-[[nodiscard]] ObjSurvey survey_obj(const std::string& name, std::size_t max_corners,
-                                   const std::function<void(const std::function<void(std::string_view, std::size_t)>&)>& lines);
+[[nodiscard]] ObjSurvey survey_obj(
+    const std::string& name, std::size_t max_corners,
+    const std::function<void(const std::function<void(std::string_view, std::size_t)>&)>& lines);
 
 }  // namespace raster::detail

@@ -1,13 +1,13 @@
 #include "io/open_beneath.hpp"
 
 #include <cerrno>
+#include <string>
+#include <vector>
 #include <fcntl.h>
 #include <linux/openat2.h>
-#include <string>
 #include <sys/stat.h>
 #include <sys/syscall.h>
 #include <unistd.h>
-#include <vector>
 
 namespace raster::detail {
 namespace {

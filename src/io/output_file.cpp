@@ -6,11 +6,11 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <fcntl.h>
 #include <optional>
 #include <random>
 #include <stdexcept>
 #include <string>
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -66,7 +66,8 @@ fs::path checked_destination(const fs::path& path, OutputPolicy policy, std::spa
     existing.reset();
     if (::lstat(target.c_str(), &status) == 0) {
         if (!S_ISREG(status.st_mode)) fail(path, std::string("it is ") + kind_of(status.st_mode));
-        const FileIdentity identity{static_cast<std::uint64_t>(status.st_dev), static_cast<std::uint64_t>(status.st_ino)};
+        const FileIdentity identity{static_cast<std::uint64_t>(status.st_dev),
+                                    static_cast<std::uint64_t>(status.st_ino)};
         for (const InputRecord& input : inputs) {
             if (input.identity != identity) continue;
             const std::string same = input.path == path ? "" : " '" + printable(input.path.string()) + "'";

@@ -44,20 +44,24 @@ std::uint64_t list_length(const std::uint8_t* at, const PlyProperty& property, b
     return negative ? UINT64_MAX : raw;
 }
 
-std::string binary_problem(const std::vector<PlyElement>& elements, std::span<const std::uint8_t> body, bool big_endian) {
+std::string binary_problem(const std::vector<PlyElement>& elements, std::span<const std::uint8_t> body,
+                           bool big_endian) {
     std::size_t at = 0;
     for (const PlyElement& element : elements) {
-        if (element.count > body.size() - at) return declares(element) + ", more than the " + std::to_string(body.size() - at) + " bytes left";
+        if (element.count > body.size() - at)
+            return declares(element) + ", more than the " + std::to_string(body.size() - at) + " bytes left";
         for (std::uint64_t i = 0; i < element.count; ++i) {
             for (const PlyProperty& property : element.properties) {
-                std::uint64_t need = static_cast<std::uint64_t>(property.list ? property.count_bytes : property.item_bytes);
+                std::uint64_t need =
+                    static_cast<std::uint64_t>(property.list ? property.count_bytes : property.item_bytes);
                 if (need > body.size() - at) return "";  // cut short: the reader keeps what is there
                 if (property.list) {
                     const std::uint64_t length = list_length(body.data() + at, property, big_endian);
                     at += need;
                     if (length > (body.size() - at) / static_cast<std::uint64_t>(property.item_bytes)) {
                         return "'" + std::string(element.name) + "' item " + std::to_string(i + 1) + " has a list of " +
-                               (length == UINT64_MAX ? std::string("negative length") : std::to_string(length) + " entries") +
+                               (length == UINT64_MAX ? std::string("negative length")
+                                                     : std::to_string(length) + " entries") +
                                ", more than the bytes left can hold";
                     }
                     need = length * static_cast<std::uint64_t>(property.item_bytes);
@@ -72,7 +76,8 @@ std::string binary_problem(const std::vector<PlyElement>& elements, std::span<co
 std::string ascii_problem(const std::vector<PlyElement>& elements, std::string_view body) {
     std::size_t at = 0;
     for (const PlyElement& element : elements) {
-        if (element.count > body.size() - at) return declares(element) + ", more than the " + std::to_string(body.size() - at) + " bytes left";
+        if (element.count > body.size() - at)
+            return declares(element) + ", more than the " + std::to_string(body.size() - at) + " bytes left";
         for (std::uint64_t i = 0; i < element.count; ++i) {
             if (at >= body.size()) return "";  // cut short: the reader keeps what is there
             const std::size_t end = std::min(body.find('\n', at), body.size());
@@ -89,7 +94,8 @@ std::string ascii_problem(const std::vector<PlyElement>& elements, std::string_v
                 const std::string_view text = words[word];
                 const auto [stop, error] = std::from_chars(text.data(), text.data() + text.size(), length);
                 if (error != std::errc() || stop != text.data() + text.size() || length > words.size() - word - 1) {
-                    return "'" + std::string(element.name) + "' item " + std::to_string(i + 1) + " has a list longer than its line";
+                    return "'" + std::string(element.name) + "' item " + std::to_string(i + 1) +
+                           " has a list longer than its line";
                 }
                 word += 1 + static_cast<std::size_t>(length);
             }
@@ -107,7 +113,8 @@ std::string ply_counts_problem(std::span<const std::uint8_t> bytes) {
     std::size_t start = 0;
     for (;;) {
         const std::size_t newline = text.find('\n', start);
-        if (newline == std::string_view::npos || start > kMaxPlyHeaderBytes) return "the PLY header has no end_header line";
+        if (newline == std::string_view::npos || start > kMaxPlyHeaderBytes)
+            return "the PLY header has no end_header line";
         std::string_view line = text.substr(start, newline - start);
         if (line.ends_with('\r')) line.remove_suffix(1);
         start = newline + 1;
@@ -122,7 +129,8 @@ std::string ply_counts_problem(std::span<const std::uint8_t> bytes) {
         }
         if (words[0] == "property" && !elements.empty()) {
             if (words.size() == 5 && words[1] == "list") {
-                elements.back().properties.push_back({true, type_bytes(words[2]), signed_type(words[2]), type_bytes(words[3])});
+                elements.back().properties.push_back(
+                    {true, type_bytes(words[2]), signed_type(words[2]), type_bytes(words[3])});
             } else if (words.size() == 3) {
                 elements.back().properties.push_back({false, 0, false, type_bytes(words[1])});
             }

@@ -10,8 +10,9 @@
 namespace raster::detail {
 namespace {
 
-constexpr std::array<std::string_view, 16> kTypes{"char", "uchar", "short", "ushort", "int",   "uint",   "float",   "double",
-                                                 "int8", "uint8", "int16", "uint16", "int32", "uint32", "float32", "float64"};
+constexpr std::array<std::string_view, 16> kTypes{"char",  "uchar",  "short",   "ushort", "int",   "uint",
+                                                  "float", "double", "int8",    "uint8",  "int16", "uint16",
+                                                  "int32", "uint32", "float32", "float64"};
 
 bool is_type(std::string_view word) { return std::find(kTypes.begin(), kTypes.end(), word) != kTypes.end(); }
 
@@ -22,7 +23,8 @@ bool is_count(std::string_view word) {
 }
 
 // "" when one header line is well formed, else what is wrong with it.
-std::string line_problem(const std::vector<std::string_view>& words, int number, bool& format_seen, bool& element_seen) {
+std::string line_problem(const std::vector<std::string_view>& words, int number, bool& format_seen,
+                         bool& element_seen) {
     const std::string_view key = words.empty() ? std::string_view() : words[0];
     if (number == 1) return key == "ply" && words.size() == 1 ? "" : "does not begin with 'ply'";
     if (key == "comment" || key == "obj_info") return "";
@@ -39,7 +41,9 @@ std::string line_problem(const std::vector<std::string_view>& words, int number,
         if (!element_seen) return "has a property before any element";
         const bool scalar = words.size() == 3 && is_type(words[1]);
         const bool list = words.size() == 5 && words[1] == "list" && is_type(words[2]) && is_type(words[3]);
-        return scalar || list ? "" : "has a property line that is not 'property TYPE NAME' or 'property list TYPE TYPE NAME'";
+        return scalar || list
+                   ? ""
+                   : "has a property line that is not 'property TYPE NAME' or 'property list TYPE TYPE NAME'";
     }
     return "";  // other lines (Blender 2.4 wrote a bare "Created by ...") are skipped, as assimp skips them
 }
@@ -59,7 +63,8 @@ std::vector<std::string_view> ply_words(std::string_view line) {
 }
 
 std::string ply_header_problem(std::span<const std::uint8_t> bytes) {
-    const std::string_view text(reinterpret_cast<const char*>(bytes.data()), std::min(bytes.size(), kMaxPlyHeaderBytes));
+    const std::string_view text(reinterpret_cast<const char*>(bytes.data()),
+                                std::min(bytes.size(), kMaxPlyHeaderBytes));
     bool format_seen = false, element_seen = false;
     int number = 0;
     for (std::size_t start = 0; start < text.size();) {

@@ -9,17 +9,17 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
-#include <fcntl.h>
 #include <new>
-#include <poll.h>
 #include <span>
 #include <stdexcept>
+#include <utility>
+#include <vector>
+#include <fcntl.h>
+#include <poll.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
-#include <utility>
-#include <vector>
 
 #if defined(__SANITIZE_ADDRESS__)
 #define RASTER_ADDRESS_SANITIZER 1
@@ -56,7 +56,8 @@ void note_memory_ran_out() {
 std::string memory_text(std::uint64_t bytes) {
     char text[32];
     const bool gib = bytes >= (std::uint64_t{1} << 30);
-    std::snprintf(text, sizeof text, gib ? "%.1f GiB" : "%.0f MiB", static_cast<double>(bytes) / static_cast<double>(std::uint64_t{1} << (gib ? 30 : 20)));
+    std::snprintf(text, sizeof text, gib ? "%.1f GiB" : "%.0f MiB",
+                  static_cast<double>(bytes) / static_cast<double>(std::uint64_t{1} << (gib ? 30 : 20)));
     return text;
 }
 
@@ -113,7 +114,8 @@ void write_all(int descriptor, const std::vector<std::uint8_t>& bytes) {
         message.assign(sizeof(std::uint64_t) + 1, static_cast<std::uint8_t>(Outcome::out_of_memory));
     } catch (const std::exception& problem) {
         const std::string why = problem.what();
-        message.assign(sizeof(std::uint64_t) + 1, static_cast<std::uint8_t>(memory_ran_out != 0 ? Outcome::out_of_memory : Outcome::refused));
+        message.assign(sizeof(std::uint64_t) + 1,
+                       static_cast<std::uint8_t>(memory_ran_out != 0 ? Outcome::out_of_memory : Outcome::refused));
         message.insert(message.end(), why.begin(), why.end());
     }
     const std::uint64_t length = message.size() - sizeof length;
@@ -168,7 +170,8 @@ ChildOutcome run_reader_child(const std::function<Model()>& read, const ReaderLi
     bool length_known = false;
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(max_seconds);
     while (got < received.size()) {
-        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now()).count();
+        const auto left =
+            std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now()).count();
         if (left <= 0) {
             outcome.timed_out = true;
             break;
@@ -204,31 +207,39 @@ ChildOutcome run_reader_child(const std::function<Model()>& read, const ReaderLi
     return outcome;
 }
 
-Model model_from_outcome(const ChildOutcome& outcome, const std::string& name, const std::string& reader, const ReaderLimits& limits) {
+Model model_from_outcome(const ChildOutcome& outcome, const std::string& name, const std::string& reader,
+                         const ReaderLimits& limits) {
     const auto [max_memory, max_seconds] = limits_in_force(limits);
-    const std::string memory_refusal =
-        name + ": the " + reader + " reader needed more than " + memory_text(max_memory) + " of memory; raise --max-memory to allow it";
-    const std::string time_refusal = name + ": the " + reader + " reader took more than " + seconds_text(max_seconds) + "; raise --max-seconds to allow it";
-    if (!outcome.start_error.empty()) throw std::runtime_error(name + ": cannot start the reader process: " + outcome.start_error);
+    const std::string memory_refusal = name + ": the " + reader + " reader needed more than " +
+                                       memory_text(max_memory) + " of memory; raise --max-memory to allow it";
+    const std::string time_refusal = name + ": the " + reader + " reader took more than " + seconds_text(max_seconds) +
+                                     "; raise --max-seconds to allow it";
+    if (!outcome.start_error.empty())
+        throw std::runtime_error(name + ": cannot start the reader process: " + outcome.start_error);
     if (outcome.timed_out) throw std::runtime_error(time_refusal);
     if (outcome.too_large) throw std::runtime_error(memory_refusal);
     const std::vector<std::uint8_t>& received = outcome.message;
     const int status = outcome.status;
     if (WIFSIGNALED(status)) {
         const int signal = WTERMSIG(status);
-        if (signal == SIGXCPU || (signal == SIGKILL && outcome.processor_seconds >= std::ceil(max_seconds))) throw std::runtime_error(time_refusal);
-        if (signal == SIGKILL) throw std::runtime_error(name + ": the " + reader + " reader was killed (by the system, perhaps for want of memory)");
+        if (signal == SIGXCPU || (signal == SIGKILL && outcome.processor_seconds >= std::ceil(max_seconds)))
+            throw std::runtime_error(time_refusal);
+        if (signal == SIGKILL)
+            throw std::runtime_error(name + ": the " + reader +
+                                     " reader was killed (by the system, perhaps for want of memory)");
         throw std::runtime_error(name + ": the " + reader + " reader crashed (" + signal_name(signal) + ")");
     }
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || received.empty()) {
         // A sanitizer's report ends the child with an exit code of its own.
-        throw std::runtime_error(name + ": the " + reader + " reader crashed (exit status " + std::to_string(WEXITSTATUS(status)) + ")");
+        throw std::runtime_error(name + ": the " + reader + " reader crashed (exit status " +
+                                 std::to_string(WEXITSTATUS(status)) + ")");
     }
     const auto kind = static_cast<Outcome>(received.front());
     const std::span<const std::uint8_t> rest = std::span<const std::uint8_t>(received).subspan(1);
     if (kind == Outcome::out_of_memory) throw std::runtime_error(memory_refusal);
     if (kind == Outcome::refused) throw std::runtime_error(std::string(rest.begin(), rest.end()));
-    if (kind != Outcome::model) throw std::runtime_error(name + ": the " + reader + " reader sent nothing raster understands");
+    if (kind != Outcome::model)
+        throw std::runtime_error(name + ": the " + reader + " reader sent nothing raster understands");
     try {
         return model_from_wire(rest);
     } catch (const std::runtime_error& problem) {
@@ -236,7 +247,8 @@ Model model_from_outcome(const ChildOutcome& outcome, const std::string& name, c
     }
 }
 
-Model read_in_child(const std::function<Model()>& read, const std::string& name, const std::string& reader, const ReaderLimits& limits) {
+Model read_in_child(const std::function<Model()>& read, const std::string& name, const std::string& reader,
+                    const ReaderLimits& limits) {
     if (!limits.separate_process) return read();
     return model_from_outcome(run_reader_child(read, limits), name, reader, limits);
 }

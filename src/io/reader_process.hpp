@@ -30,9 +30,10 @@ struct ChildOutcome {
 [[nodiscard]] ChildOutcome run_reader_child(const std::function<Model()>& read, const ReaderLimits& limits);
 
 // The model a child sent, or the one line that says why there is none.
-[[nodiscard]] Model model_from_outcome(const ChildOutcome& outcome, const std::string& name, const std::string& reader, const ReaderLimits& limits);
+[[nodiscard]] Model model_from_outcome(const ChildOutcome& outcome, const std::string& name, const std::string& reader,
+                                       const ReaderLimits& limits);
 
-[[nodiscard]] Model read_in_child(const std::function<Model()>& read, const std::string& name, const std::string& reader,
-                                  const ReaderLimits& limits);
+[[nodiscard]] Model read_in_child(const std::function<Model()>& read, const std::string& name,
+                                  const std::string& reader, const ReaderLimits& limits);
 
 }  // namespace raster::detail

@@ -9,16 +9,16 @@
 #include <cerrno>
 #include <csignal>
 #include <cstring>
-#include <poll.h>
+#include <initializer_list>
+#include <span>
 #include <stdexcept>
 #include <string>
+#include <vector>
+#include <poll.h>
 #include <sys/prctl.h>
 #include <sys/socket.h>
 #include <sys/wait.h>
-#include <initializer_list>
-#include <span>
 #include <unistd.h>
-#include <vector>
 
 namespace raster {
 namespace {
@@ -154,7 +154,8 @@ Model ReaderService::read(const std::filesystem::path& path, const ObjOptions& o
     outcome.timed_out = in.value<std::uint8_t>() != 0;
     outcome.too_large = in.value<std::uint8_t>() != 0;
     outcome.start_error = in.text();
-    answer.erase(answer.begin(), answer.end() - static_cast<std::ptrdiff_t>(in.left()));  // the rest is what the reader sent
+    answer.erase(answer.begin(),
+                 answer.end() - static_cast<std::ptrdiff_t>(in.left()));  // the rest is what the reader sent
     outcome.message = std::move(answer);
     return detail::model_from_outcome(outcome, name, reader, options.limits);
 }

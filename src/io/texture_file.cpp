@@ -23,10 +23,12 @@ namespace {
 // stb_image for the formats it shares with raster's header reader, which has already checked the
 // size and that the data is whole: stb_image is not hardened against hostile files.
 Framebuffer decode_with_stb(std::span<const std::uint8_t> bytes, std::string_view format) {
-    if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max())) throw std::runtime_error("image file too large");
+    if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+        throw std::runtime_error("image file too large");
     int width = 0, height = 0, channels = 0;
     const std::unique_ptr<stbi_uc, void (*)(void*)> rgb(
-        stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), static_cast<int>(bytes.size()), &width, &height, &channels, 3),
+        stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), static_cast<int>(bytes.size()), &width,
+                              &height, &channels, 3),
         stbi_image_free);
     if (!rgb) throw std::runtime_error("the " + std::string(format) + " data is corrupt");
     const std::size_t size = static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3;
@@ -40,10 +42,11 @@ Texture decode_texture(std::span<const std::uint8_t> bytes, std::size_t max_texe
     const std::string_view format = detail::format_name(header.format);
     const auto texels = static_cast<std::size_t>(header.width) * static_cast<std::size_t>(header.height);
     if (texels > max_texels || header.width > kMaxImageSide || header.height > kMaxImageSide) {
-        throw std::runtime_error("image is " + std::to_string(header.width) + "x" + std::to_string(header.height) + ", more than the " +
-                                 std::to_string(max_texels) + " texels allowed");
+        throw std::runtime_error("image is " + std::to_string(header.width) + "x" + std::to_string(header.height) +
+                                 ", more than the " + std::to_string(max_texels) + " texels allowed");
     }
-    if (header.truncated) throw std::runtime_error("truncated image: the " + std::string(format) + " data ends before the picture does");
+    if (header.truncated)
+        throw std::runtime_error("truncated image: the " + std::string(format) + " data ends before the picture does");
     if (header.format == detail::ImageFormat::webp) return Texture(decode_webp_still(bytes, max_texels));
     return Texture(decode_with_stb(bytes, format));
 }

@@ -73,7 +73,9 @@ public:
     }
     [[nodiscard]] bool done() const noexcept { return rest_.empty(); }
     [[nodiscard]] std::size_t left() const noexcept { return rest_.size(); }
-    [[noreturn]] static void broken() { throw std::runtime_error("what the reader process sent does not hold together"); }
+    [[noreturn]] static void broken() {
+        throw std::runtime_error("what the reader process sent does not hold together");
+    }
 
 private:
     std::span<const std::uint8_t> take(std::size_t size) {

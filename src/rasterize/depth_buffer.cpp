@@ -37,7 +37,8 @@ float DepthBuffer::at(int x, int y) const {
     if (x < 0 || y < 0 || x >= width_ || y >= height_) {
         throw std::out_of_range("depth (" + std::to_string(x) + ", " + std::to_string(y) + ") is outside the buffer");
     }
-    if (stale_[static_cast<std::size_t>(y)] != 0) return std::numeric_limits<float>::infinity();  // cleared, not yet filled
+    if (stale_[static_cast<std::size_t>(y)] != 0)
+        return std::numeric_limits<float>::infinity();  // cleared, not yet filled
     return depths_[static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)];
 }
 

@@ -8,12 +8,11 @@
 namespace raster {
 namespace {
 
-std::optional<std::array<SubpixelPoint, 4>> face_on_screen(const OrthoCamera& camera,
-                                                           const Cube& cube, const Face& face) {
+std::optional<std::array<SubpixelPoint, 4>> face_on_screen(const OrthoCamera& camera, const Cube& cube,
+                                                           const Face& face) {
     std::array<SubpixelPoint, 4> corners{};
     for (std::size_t i = 0; i < corners.size(); ++i) {
-        const std::optional<SubpixelPoint> snapped =
-            camera.subpixel_from_world(cube.corners()[face.corners[i]]);
+        const std::optional<SubpixelPoint> snapped = camera.subpixel_from_world(cube.corners()[face.corners[i]]);
         if (!snapped) return std::nullopt;
         corners[i] = *snapped;
     }
@@ -54,11 +53,10 @@ void draw_faces(Framebuffer& framebuffer, const OrthoCamera& camera, const Cube&
     }
 }
 
-void draw_edges(Framebuffer& framebuffer, const OrthoCamera& camera, const Cube& cube,
-                EdgeSelection selection, Rgb colour) {
-    const auto edges = selection == EdgeSelection::all
-                           ? cube.edges()
-                           : cube.edges_of(faces_toward_camera(camera, cube));
+void draw_edges(Framebuffer& framebuffer, const OrthoCamera& camera, const Cube& cube, EdgeSelection selection,
+                Rgb colour) {
+    const auto edges =
+        selection == EdgeSelection::all ? cube.edges() : cube.edges_of(faces_toward_camera(camera, cube));
     for (const Edge& edge : edges) {
         const auto from = camera.pixel_from_world(cube.corners()[edge.from]);
         const auto to = camera.pixel_from_world(cube.corners()[edge.to]);

@@ -37,7 +37,9 @@ struct EdgeFunction {
         const bool top_left = ey < 0 || (ey == 0 && ex > 0);
         return {-ey * kSubpixelOne, ex * kSubpixelOne, ey * a.x - ex * a.y, top_left ? 0 : 1};
     }
-    [[nodiscard]] std::int64_t at(std::int64_t i, std::int64_t j) const noexcept { return step_x * i + step_y * j + offset; }
+    [[nodiscard]] std::int64_t at(std::int64_t i, std::int64_t j) const noexcept {
+        return step_x * i + step_y * j + offset;
+    }
     // What E gains at a point (dx, dy) subpixels from the pixel centre: the same as the offset
     // gains when the polygon moves by (-dx, -dy), exactly (the steps are whole multiples of a pixel).
     [[nodiscard]] std::int64_t shift(std::int32_t dx, std::int32_t dy) const noexcept {

@@ -21,7 +21,8 @@ namespace raster::detail {
 // Throws std::invalid_argument for a depth buffer of another size or a mesh whose facets or
 // normals do not match its vertices.
 inline void check_drawable(const Framebuffer& colour, const DepthBuffer* depth_buffer, const Mesh& mesh) {
-    if (depth_buffer != nullptr && (depth_buffer->width() != colour.width() || depth_buffer->height() != colour.height())) {
+    if (depth_buffer != nullptr &&
+        (depth_buffer->width() != colour.width() || depth_buffer->height() != colour.height())) {
         throw std::invalid_argument("depth buffer and framebuffer differ in size");
     }
     if (mesh.normals.size() != mesh.positions.size()) {
@@ -57,17 +58,20 @@ std::array<typename Shader::Varying, 3> facet_varyings(const Shader& shader, con
                                                        const std::vector<typename Shader::Varying>& per_vertex) {
     const std::array<glm::vec3, 3> at{mesh.positions[facet.corners[0]], mesh.positions[facet.corners[1]],
                                       mesh.positions[facet.corners[2]]};
-    if (Shader::kFacetNormal) {  // lit once per facet at its centroid; texture coordinates and colours stay each corner's own
+    if (Shader::kFacetNormal) {  // lit once per facet at its centroid; texture coordinates and colours stay each
+                                 // corner's own
         const glm::vec3 centroid = at[0] / 3.0F + at[1] / 3.0F + at[2] / 3.0F;  // no overflow
         if (mesh.uvs.empty() && mesh.colours.empty()) {
             const auto shared = shader.vertex({centroid, facet.normal});
             return {shared, shared, shared};
         }
-        return {shader.vertex(corner_of(mesh, facet, 0, centroid, facet.normal)), shader.vertex(corner_of(mesh, facet, 1, centroid, facet.normal)),
+        return {shader.vertex(corner_of(mesh, facet, 0, centroid, facet.normal)),
+                shader.vertex(corner_of(mesh, facet, 1, centroid, facet.normal)),
                 shader.vertex(corner_of(mesh, facet, 2, centroid, facet.normal))};
     }
     if (mesh.surface == Surface::faceted) {  // the facet's normal, each corner's own position
-        return {shader.vertex(corner_of(mesh, facet, 0, at[0], facet.normal)), shader.vertex(corner_of(mesh, facet, 1, at[1], facet.normal)),
+        return {shader.vertex(corner_of(mesh, facet, 0, at[0], facet.normal)),
+                shader.vertex(corner_of(mesh, facet, 1, at[1], facet.normal)),
                 shader.vertex(corner_of(mesh, facet, 2, at[2], facet.normal))};
     }
     return {per_vertex[facet.corners[0]], per_vertex[facet.corners[1]], per_vertex[facet.corners[2]]};

@@ -3,8 +3,8 @@
 #include "rasterize/edge_function.hpp"
 
 #include <algorithm>
-#include <cstdlib>
 #include <array>
+#include <cstdlib>
 
 namespace raster {
 namespace {
@@ -56,7 +56,7 @@ std::int64_t rasterize_convex(std::span<const SubpixelPoint> corners, PixelRect 
     for (std::size_t i = 0; i < count; ++i) {
         SubpixelPoint a = corners[i];
         SubpixelPoint b = corners[i + 1 == count ? 0 : i + 1];
-        if (a == b) continue;  // a repeated corner bounds nothing: the polygon is the one without it
+        if (a == b) continue;           // a repeated corner bounds nothing: the polygon is the one without it
         if (area < 0) std::swap(a, b);  // walk every polygon in the same rotational sense
         edges[edge_count++] = EdgeFunction::through(a, b);
     }
@@ -69,8 +69,8 @@ std::int64_t rasterize_convex(std::span<const SubpixelPoint> corners, PixelRect 
     return last_row - first_row + 1;
 }
 
-std::int64_t fill_convex(Framebuffer& framebuffer, std::span<const SubpixelPoint> corners,
-                         Rgb colour, glm::ivec2 origin) {
+std::int64_t fill_convex(Framebuffer& framebuffer, std::span<const SubpixelPoint> corners, Rgb colour,
+                         glm::ivec2 origin) {
     const PixelRect clip{origin.x, origin.y, framebuffer.width(), framebuffer.height()};
     return rasterize_convex(corners, clip, [&](Span span) {
         framebuffer.fill_row(span.y - origin.y, span.x_begin - origin.x, span.x_end - origin.x, colour);

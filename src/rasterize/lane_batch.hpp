@@ -23,9 +23,11 @@ concept NeedsFootprint = requires(const Shader& shader, const typename Shader::V
 // A shader that colours kLanes pixels at once; every shader of the library is one, and the
 // batch runs any other (a test's, the lab's) pixel by pixel through pixel().
 template <typename Shader>
-concept LaneShader = requires(const Shader& shader, std::span<const typename Shader::Varying> varyings, std::span<Rgb> out) {
+concept LaneShader = requires(const Shader& shader, std::span<const typename Shader::Varying> varyings,
+                              std::span<Rgb> out) {
     shader.pixels(varyings, out);
-} || requires(const Shader& shader, std::span<const typename Shader::Varying> varyings, std::span<Rgb> out) {
+}
+|| requires(const Shader& shader, std::span<const typename Shader::Varying> varyings, std::span<Rgb> out) {
     shader.pixels(varyings, varyings, varyings, out);
 };
 

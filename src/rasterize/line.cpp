@@ -26,8 +26,7 @@ struct DdaWalk {
     std::int64_t major_at(std::int64_t i) const { return major_start + major_step * i; }
     // minor_start + round(minor_delta * i / N), halves rounded up, in exact integers.
     std::int64_t minor_at(std::int64_t i) const {
-        return minor_start + static_cast<std::int64_t>(
-                                 floor_div(Wide{2} * minor_delta * i + steps, Wide{2} * steps));
+        return minor_start + static_cast<std::int64_t>(floor_div(Wide{2} * minor_delta * i + steps, Wide{2} * steps));
     }
 };
 
@@ -37,7 +36,10 @@ std::int64_t first_where(std::int64_t lo, std::int64_t hi, Predicate holds) {
     std::int64_t end = hi + 1;
     while (lo < end) {
         const std::int64_t mid = lo + (end - lo) / 2;
-        if (holds(mid)) end = mid; else lo = mid + 1;
+        if (holds(mid))
+            end = mid;
+        else
+            lo = mid + 1;
     }
     return lo;
 }
@@ -48,8 +50,7 @@ struct SampleRange {
 };
 
 // Sample indices whose pixel lies inside [0, major_size) x [0, minor_size); empty if first > last.
-SampleRange visible_samples(const DdaWalk& walk, std::int64_t major_size,
-                            std::int64_t minor_size) {
+SampleRange visible_samples(const DdaWalk& walk, std::int64_t major_size, std::int64_t minor_size) {
     SampleRange range{0, walk.steps};
     if (walk.major_step > 0) {
         range.first = std::max(range.first, -walk.major_start);
@@ -74,8 +75,7 @@ SampleRange visible_samples(const DdaWalk& walk, std::int64_t major_size,
 
 }  // namespace
 
-std::int64_t draw_line(Framebuffer& framebuffer, glm::ivec2 from, glm::ivec2 to, Rgb colour,
-                       glm::ivec2 origin) {
+std::int64_t draw_line(Framebuffer& framebuffer, glm::ivec2 from, glm::ivec2 to, Rgb colour, glm::ivec2 origin) {
     // Shifting both ends by whole pixels shifts every sample alike, so work relative to origin.
     const std::int64_t x0 = std::int64_t{from.x} - origin.x;
     const std::int64_t y0 = std::int64_t{from.y} - origin.y;
@@ -92,8 +92,8 @@ std::int64_t draw_line(Framebuffer& framebuffer, glm::ivec2 from, glm::ivec2 to,
         return 1;
     }
 
-    const DdaWalk walk = x_major ? DdaWalk{x0, dx > 0 ? 1 : -1, y0, dy, steps}
-                                 : DdaWalk{y0, dy > 0 ? 1 : -1, x0, dx, steps};
+    const DdaWalk walk =
+        x_major ? DdaWalk{x0, dx > 0 ? 1 : -1, y0, dy, steps} : DdaWalk{y0, dy > 0 ? 1 : -1, x0, dx, steps};
     const std::int64_t major_size = x_major ? framebuffer.width() : framebuffer.height();
     const std::int64_t minor_size = x_major ? framebuffer.height() : framebuffer.width();
     // With both ends inside, every sample is visible and the search can be skipped.
@@ -120,12 +120,19 @@ std::int64_t draw_line(Framebuffer& framebuffer, glm::ivec2 from, glm::ivec2 to,
             plot(static_cast<int>(major), static_cast<int>(minor));
             major += walk.major_step;
             remainder += 2 * walk.minor_delta;
-            if (remainder >= denominator) { remainder -= denominator; ++minor; }
-            else if (remainder < 0) { remainder += denominator; --minor; }
+            if (remainder >= denominator) {
+                remainder -= denominator;
+                ++minor;
+            } else if (remainder < 0) {
+                remainder += denominator;
+                --minor;
+            }
         }
     };
-    if (x_major) step_through([&](int x, int y) { framebuffer.set_pixel(x, y, colour); });
-    else step_through([&](int y, int x) { framebuffer.set_pixel(x, y, colour); });
+    if (x_major)
+        step_through([&](int x, int y) { framebuffer.set_pixel(x, y, colour); });
+    else
+        step_through([&](int y, int x) { framebuffer.set_pixel(x, y, colour); });
     return range.last - range.first + 1;
 }
 

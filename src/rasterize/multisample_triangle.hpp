@@ -21,9 +21,9 @@ namespace raster::detail {
 // when `depth_test`, and written per sample always (a transparent frame reads coverage from it).
 // The pixels go through `batch` when given (the caller flushes it), else through one of its own.
 template <typename Shader, Interpolation kMode>
-void shade_triangle_samples(SampleBuffer& target, bool depth_test, const std::array<ShadedCorner<typename Shader::Varying>, 3>& corners,
-                            const Shader& shader, PixelRect rows, std::span<const SampleOffset> offsets,
-                            LaneBatch<Shader>* batch = nullptr) {
+void shade_triangle_samples(SampleBuffer& target, bool depth_test,
+                            const std::array<ShadedCorner<typename Shader::Varying>, 3>& corners, const Shader& shader,
+                            PixelRect rows, std::span<const SampleOffset> offsets, LaneBatch<Shader>* batch = nullptr) {
     static_assert(kMode != Interpolation::perspective_float, "a lab choice, drawn with one sample only");
     using Varying = typename Shader::Varying;
     const std::array<SubpixelPoint, 3> points{corners[0].at, corners[1].at, corners[2].at};
@@ -60,8 +60,10 @@ void shade_triangle_samples(SampleBuffer& target, bool depth_test, const std::ar
         } else {
             const Varying varying = base + along1 * static_cast<float>(a) + along2 * static_cast<float>(b);
             if constexpr (NeedsFootprint<Shader>) {
-                const Varying step = along1 * static_cast<float>(w1.per_pixel_x()) + along2 * static_cast<float>(w2.per_pixel_x());
-                const Varying step_y = along1 * static_cast<float>(w1.per_pixel_y()) + along2 * static_cast<float>(w2.per_pixel_y());
+                const Varying step =
+                    along1 * static_cast<float>(w1.per_pixel_x()) + along2 * static_cast<float>(w2.per_pixel_x());
+                const Varying step_y =
+                    along1 * static_cast<float>(w1.per_pixel_y()) + along2 * static_cast<float>(w2.per_pixel_y());
                 return {varying, step, step_y};
             } else {
                 return {varying};

@@ -42,7 +42,8 @@ struct PerspectiveWeights {
     const WeightPlane& w2;
     double inv0, inv1, inv2;
     PerspectiveStep per_x, per_y;
-    PerspectiveWeights(const WeightPlane& plane1, const WeightPlane& plane2, double inv0_, double inv1_, double inv2_) noexcept
+    PerspectiveWeights(const WeightPlane& plane1, const WeightPlane& plane2, double inv0_, double inv1_,
+                       double inv2_) noexcept
         : w1(plane1), w2(plane2), inv0(inv0_), inv1(inv1_), inv2(inv2_),
           per_x(PerspectiveStep::of(plane1.per_pixel_x(), plane2.per_pixel_x(), inv0_, inv1_, inv2_)),
           per_y(PerspectiveStep::of(plane1.per_pixel_y(), plane2.per_pixel_y(), inv0_, inv1_, inv2_)) {}
@@ -52,14 +53,15 @@ struct PerspectiveWeights {
 // and q2 / sum (sum = 1 / w, the view depth w) and, for a shader that filters, its change along
 // a screen step in x and in y.
 template <typename Shader, typename Varying = typename Shader::Varying>
-PixelVarying<Varying> perspective_varying(const Varying& base, const Varying& along1, const Varying& along2, const PerspectiveWeights& p,
-                                          double q1, double q2, double sum, double w) {
+PixelVarying<Varying> perspective_varying(const Varying& base, const Varying& along1, const Varying& along2,
+                                          const PerspectiveWeights& p, double q1, double q2, double sum, double w) {
     const double t1 = q1 * w, t2 = q2 * w;
     PixelVarying<Varying> at{base + along1 * static_cast<float>(t1) + along2 * static_cast<float>(t2)};
     if constexpr (NeedsFootprint<Shader>) {
         // The derivative of (q_k / sum) along the step: (dq_k - t_k dsum) / sum.
         const auto change = [&](const PerspectiveStep& d) {
-            return along1 * static_cast<float>((d.dq1 - t1 * d.dsum) / sum) + along2 * static_cast<float>((d.dq2 - t2 * d.dsum) / sum);
+            return along1 * static_cast<float>((d.dq1 - t1 * d.dsum) / sum) +
+                   along2 * static_cast<float>((d.dq2 - t2 * d.dsum) / sum);
         };
         at.per_x = change(p.per_x);
         at.per_y = change(p.per_y);
@@ -92,21 +94,26 @@ struct PerspectiveRun {
         const Reals i([x](auto k) { return static_cast<Real>(x + static_cast<int>(k)); });
         const auto j = static_cast<Real>(y);
         const auto one = static_cast<Real>(kSubpixelOne);
-        const Reals a = (i * one - real(p.w1.x0)) * real(p.w1.per_subpixel_x) + (j * one - real(p.w1.y0)) * real(p.w1.per_subpixel_y);
-        const Reals b = (i * one - real(p.w2.x0)) * real(p.w2.per_subpixel_x) + (j * one - real(p.w2.y0)) * real(p.w2.per_subpixel_y);
+        const Reals a = (i * one - real(p.w1.x0)) * real(p.w1.per_subpixel_x) +
+                        (j * one - real(p.w1.y0)) * real(p.w1.per_subpixel_y);
+        const Reals b = (i * one - real(p.w2.x0)) * real(p.w2.per_subpixel_x) +
+                        (j * one - real(p.w2.y0)) * real(p.w2.per_subpixel_y);
         const Reals q1 = a * real(p.inv1), q2 = b * real(p.inv2), sum = (Real(1) - a - b) * real(p.inv0) + q1 + q2;
         const Reals w = Real(1) / sum;  // the view depth; one division serves all three
         store(w, depth);
         const Reals u1 = q1 * w, u2 = q2 * w;
         store(u1, t1), store(u2, t2);
         if constexpr (kNeed != Need::footprint) return;
-        store((real(p.per_x.dq1) - u1 * real(p.per_x.dsum)) / sum, x1), store((real(p.per_x.dq2) - u2 * real(p.per_x.dsum)) / sum, x2);
-        store((real(p.per_y.dq1) - u1 * real(p.per_y.dsum)) / sum, y1), store((real(p.per_y.dq2) - u2 * real(p.per_y.dsum)) / sum, y2);
+        store((real(p.per_x.dq1) - u1 * real(p.per_x.dsum)) / sum, x1),
+            store((real(p.per_x.dq2) - u2 * real(p.per_x.dsum)) / sum, x2);
+        store((real(p.per_y.dq1) - u1 * real(p.per_y.dsum)) / sum, y1),
+            store((real(p.per_y.dq2) - u2 * real(p.per_y.dsum)) / sum, y2);
     }
 
     // The Varying of lane k, as perspective_varying gives it.
     template <typename Shader, typename Varying = typename Shader::Varying>
-    [[nodiscard]] PixelVarying<Varying> varying(std::size_t k, const Varying& base, const Varying& along1, const Varying& along2) const {
+    [[nodiscard]] PixelVarying<Varying> varying(std::size_t k, const Varying& base, const Varying& along1,
+                                                const Varying& along2) const {
         PixelVarying<Varying> at{base + along1 * t1[k] + along2 * t2[k]};
         if constexpr (NeedsFootprint<Shader>) {
             at.per_x = along1 * x1[k] + along2 * x2[k];

@@ -28,18 +28,21 @@ void SampleBuffer::clear_rows(int y_begin, int y_end) noexcept {
 
 void SampleBuffer::fill(std::size_t first) noexcept {
     std::uint8_t* colour = colours_.data() + first * 3;
-    for (int s = 0; s < samples_; ++s, colour += 3) colour[0] = background_.r, colour[1] = background_.g, colour[2] = background_.b;
+    for (int s = 0; s < samples_; ++s, colour += 3)
+        colour[0] = background_.r, colour[1] = background_.g, colour[2] = background_.b;
     std::fill_n(depths_.begin() + static_cast<std::ptrdiff_t>(first), samples_, std::numeric_limits<float>::infinity());
 }
 
-void SampleBuffer::resolve_rows(int y_begin, int y_end, Framebuffer& frame, Rgb background, std::uint8_t* alpha) const noexcept {
+void SampleBuffer::resolve_rows(int y_begin, int y_end, Framebuffer& frame, Rgb background,
+                                std::uint8_t* alpha) const noexcept {
     std::uint8_t* out = frame.pixels();
     const auto n = static_cast<std::size_t>(samples_);
     const std::array<float, 256>& linear = linear_from_srgb_bytes();
     for (int y = std::max(y_begin, 0); y < std::min(y_end, height_); ++y) {
         for (int x = 0; x < width_; ++x) {
             const std::size_t first = index(x, y);
-            const std::size_t pixel = static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x);
+            const std::size_t pixel =
+                static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x);
             std::uint8_t* written = out + pixel * 3;
             if (touched_[pixel] == 0) {  // nothing drew here: the background, uncovered
                 written[0] = background.r, written[1] = background.g, written[2] = background.b;

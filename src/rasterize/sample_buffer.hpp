@@ -27,7 +27,8 @@ public:
     // The samples of pixel (x, y): samples() colours of three bytes, and samples() depths, which
     // `touch` fills (with the clear's values) when the pixel is first drawn after a clear.
     void touch(int x, int y) noexcept {
-        std::uint8_t& touched = touched_[static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)];
+        std::uint8_t& touched =
+            touched_[static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)];
         if (touched == 0) fill(index(x, y)), touched = 1;
     }
     [[nodiscard]] std::uint8_t* colours(int x, int y) noexcept { return colours_.data() + index(x, y) * 3; }
@@ -40,7 +41,8 @@ public:
 
 private:
     [[nodiscard]] std::size_t index(int x, int y) const noexcept {
-        return (static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)) * static_cast<std::size_t>(samples_);
+        return (static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)) *
+               static_cast<std::size_t>(samples_);
     }
 
     void fill(std::size_t first) noexcept;

@@ -30,7 +30,7 @@ public:
     // For a triangle of non-zero area; at most kMaxSamples offsets are used.
     SampleCoverage(const std::array<SubpixelPoint, 3>& points, std::span<const SampleOffset> offsets) noexcept
         : count_(static_cast<int>(std::min<std::size_t>(offsets.size(), kMaxSamples))) {
-        if (count_ == 0) return;  // no samples: nothing covered (usable_ stays 0)
+        if (count_ == 0) return;                               // no samples: nothing covered (usable_ stays 0)
         const bool clockwise = twice_signed_area(points) < 0;  // walked the other way, as the fill does
         for (std::size_t k = 0; k < 3; ++k) {
             const SubpixelPoint a = points[k], b = points[(k + 1) % 3];
@@ -44,11 +44,13 @@ public:
             // A sample whose moved triangle leaves the coordinate limit covers nothing, as the fill draws nothing then.
             bool within = true;
             for (const SubpixelPoint p : points) {
-                within = within && std::abs(std::int64_t{p.x} - o.x_subpixels) <= limit && std::abs(std::int64_t{p.y} - o.y_subpixels) <= limit;
+                within = within && std::abs(std::int64_t{p.x} - o.x_subpixels) <= limit &&
+                         std::abs(std::int64_t{p.y} - o.y_subpixels) <= limit;
             }
             if (within) usable_ |= std::uint32_t{1} << s;
             low_dy_ = std::min(low_dy_, o.y_subpixels), high_dy_ = std::max(high_dy_, o.y_subpixels);
-            for (std::size_t k = 0; k < 3; ++k) shift_[k][static_cast<std::size_t>(s)] = edges_[k].shift(o.x_subpixels, o.y_subpixels);
+            for (std::size_t k = 0; k < 3; ++k)
+                shift_[k][static_cast<std::size_t>(s)] = edges_[k].shift(o.x_subpixels, o.y_subpixels);
         }
         for (std::size_t k = 0; k < 3; ++k) {
             const auto shifts = std::span(shift_[k]).first(static_cast<std::size_t>(count_));
@@ -66,8 +68,10 @@ public:
     void rows(const PixelRect& clip, Visit visit) const {
         if (usable_ == 0) return;
         // Pixel rows whose centre may meet a moved triangle: its corners' rows moved by the offsets.
-        const std::int64_t first_row = std::max<std::int64_t>(-((-(std::int64_t{low_y_} - high_dy_)) >> kSubpixelBits), clip.y);
-        const std::int64_t last_row = std::min<std::int64_t>((std::int64_t{high_y_} - low_dy_) >> kSubpixelBits, std::int64_t{clip.y} + clip.height - 1);
+        const std::int64_t first_row =
+            std::max<std::int64_t>(-((-(std::int64_t{low_y_} - high_dy_)) >> kSubpixelBits), clip.y);
+        const std::int64_t last_row = std::min<std::int64_t>((std::int64_t{high_y_} - low_dy_) >> kSubpixelBits,
+                                                             std::int64_t{clip.y} + clip.height - 1);
         const bool every_sample = usable_ == all();
         for (std::int64_t row = first_row; row <= last_row; ++row) {
             std::int64_t first = clip.x, last = std::int64_t{clip.x} + clip.width - 1;
@@ -76,8 +80,8 @@ public:
             std::int64_t inner_first = first, inner_last = every_sample ? last : first - 1;
             for (std::size_t k = 0; k < 3; ++k) clamp_to_edge(edges_[k], row, inner_first, inner_last, narrowest_[k]);
             if (inner_first > inner_last) inner_first = inner_last = first - 1;
-            visit(static_cast<int>(row), static_cast<int>(first), static_cast<int>(last + 1), static_cast<int>(inner_first),
-                  static_cast<int>(inner_last + 1));
+            visit(static_cast<int>(row), static_cast<int>(first), static_cast<int>(last + 1),
+                  static_cast<int>(inner_first), static_cast<int>(inner_last + 1));
         }
     }
 
@@ -97,7 +101,7 @@ private:
     int count_;
     std::array<EdgeFunction, 3> edges_{};
     std::array<std::array<std::int64_t, kMaxSamples>, 3> shift_{};  // each edge's gain at each sample
-    std::array<std::int64_t, 3> widest_{}, narrowest_{};               // its largest and smallest gain
+    std::array<std::int64_t, 3> widest_{}, narrowest_{};            // its largest and smallest gain
     std::uint32_t usable_ = 0;
     std::int32_t low_y_ = 0, high_y_ = 0;
     std::int32_t low_dy_ = 0, high_dy_ = 0;

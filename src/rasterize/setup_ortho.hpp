@@ -36,7 +36,8 @@ public:
             const glm::dvec3 view = camera_.view_from_world(mesh_.positions[i]);
             // A depth beyond the limit is treated like a position too far away: the facet is skipped.
             const bool usable_depth = std::abs(view.z) <= kMaxViewDepth;
-            screen_[i] = {usable_depth ? snap_to_subpixel(camera_.screen_from_view(view)) : std::nullopt, static_cast<float>(view.z)};
+            screen_[i] = {usable_depth ? snap_to_subpixel(camera_.screen_from_view(view)) : std::nullopt,
+                          static_cast<float>(view.z)};
             if (!varyings_.empty()) varyings_[i] = vertex_varying(shader_, mesh_, i);
         }
     }

@@ -23,7 +23,8 @@ public:
     using Varying = typename Shader::Varying;
     // For a mesh that passed check_drawable; throws std::invalid_argument for a camera whose
     // size is not the framebuffer's.
-    PerspectiveFront(const Framebuffer& colour, const PerspectiveCamera& camera, const Mesh& mesh, const Shader& shader, double band)
+    PerspectiveFront(const Framebuffer& colour, const PerspectiveCamera& camera, const Mesh& mesh, const Shader& shader,
+                     double band)
         : camera_(camera), mesh_(mesh), shader_(shader), frustum_(colour.width(), colour.height(), band),
           clip_(mesh.positions.size()), snapped_(mesh.positions.size()) {
         if (camera.width() != colour.width() || camera.height() != colour.height()) {
@@ -35,7 +36,8 @@ public:
     void vertices(std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) {
             clip_[i] = camera_.clip_from_world(mesh_.positions[i]);
-            snapped_[i] = frustum_.inside_all(clip_[i]) ? snap_to_subpixel(camera_.screen_from_clip(clip_[i])) : std::nullopt;
+            snapped_[i] =
+                frustum_.inside_all(clip_[i]) ? snap_to_subpixel(camera_.screen_from_clip(clip_[i])) : std::nullopt;
             if (!varyings_.empty()) varyings_[i] = vertex_varying(shader_, mesh_, i);
         }
     }
@@ -46,11 +48,13 @@ public:
         std::size_t drawn = 0;
         for (std::size_t f = begin; f < end; ++f) {
             const Facet& facet = mesh_.facets[f];
-            const std::array<glm::dvec4, 3> at{clip_[facet.corners[0]], clip_[facet.corners[1]], clip_[facet.corners[2]]};
+            const std::array<glm::dvec4, 3> at{clip_[facet.corners[0]], clip_[facet.corners[1]],
+                                               clip_[facet.corners[2]]};
             if (snapped_[facet.corners[0]] && snapped_[facet.corners[1]] && snapped_[facet.corners[2]]) {
                 // Most facets need no clipping: cull them before any shading work.
                 std::array<ShadedCorner<Varying>, 3> corners{};
-                for (std::size_t k = 0; k < 3; ++k) corners[k].at = *snapped_[facet.corners[k]], corners[k].depth = static_cast<float>(at[k].w);
+                for (std::size_t k = 0; k < 3; ++k)
+                    corners[k].at = *snapped_[facet.corners[k]], corners[k].depth = static_cast<float>(at[k].w);
                 const std::array<SubpixelPoint, 3> points{corners[0].at, corners[1].at, corners[2].at};
                 if (twice_signed_area(points) <= 0) continue;  // facing away or edge-on
                 ++drawn;
@@ -69,9 +73,9 @@ private:
     template <typename Visit>
     bool clipped(const Facet& facet, const std::array<glm::dvec4, 3>& at, Visit& visit) const {
         const std::array<Varying, 3> values = facet_varyings(shader_, mesh_, facet, varyings_);
-        const ClippedPolygon<Varying> polygon = clip_triangle(frustum_, ClipVertex<Varying>{at[0], values[0]},
-                                                              ClipVertex<Varying>{at[1], values[1]},
-                                                              ClipVertex<Varying>{at[2], values[2]});
+        const ClippedPolygon<Varying> polygon =
+            clip_triangle(frustum_, ClipVertex<Varying>{at[0], values[0]}, ClipVertex<Varying>{at[1], values[1]},
+                          ClipVertex<Varying>{at[2], values[2]});
         std::array<ShadedCorner<Varying>, kMaxClippedCorners> corners{};
         bool usable = polygon.size >= 3;
         for (std::size_t k = 0; k < polygon.size && usable; ++k) {
@@ -121,10 +125,11 @@ std::size_t draw_facets_in_perspective(Framebuffer& colour, DepthBuffer* depth_b
                                        std::optional<PixelRect> rows = std::nullopt) {
     const PixelRect target = rows.value_or(PixelRect{0, 0, colour.width(), colour.height()});
     LaneBatch<Shader> lanes(shader);
-    const std::size_t drawn = facing_triangles_in_perspective(colour, depth_buffer, camera, mesh, shader, band, [&](const auto& corners) {
-        if (misses_rows({corners[0].at, corners[1].at, corners[2].at}, target)) return;  // another band's
-        shade_triangle<Shader, FloatDepth, kMode>(colour, depth_buffer, corners, shader, {}, target, &lanes);
-    });
+    const std::size_t drawn =
+        facing_triangles_in_perspective(colour, depth_buffer, camera, mesh, shader, band, [&](const auto& corners) {
+            if (misses_rows({corners[0].at, corners[1].at, corners[2].at}, target)) return;  // another band's
+            shade_triangle<Shader, FloatDepth, kMode>(colour, depth_buffer, corners, shader, {}, target, &lanes);
+        });
     lanes.flush();
     return drawn;
 }

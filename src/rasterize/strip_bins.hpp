@@ -30,10 +30,14 @@ struct StripLayout {
     int rows;
     [[nodiscard]] static StripLayout of(int width, int height) noexcept { return {width, height, strip_rows(width)}; }
     [[nodiscard]] int count() const noexcept { return (height + rows - 1) / rows; }
-    [[nodiscard]] PixelRect strip(int s) const noexcept { return {0, s * rows, width, std::min(rows, height - s * rows)}; }
+    [[nodiscard]] PixelRect strip(int s) const noexcept {
+        return {0, s * rows, width, std::min(rows, height - s * rows)};
+    }
 };
 
-inline std::int32_t floor_div(std::int32_t a, std::int32_t b) noexcept { return a / b - ((a % b != 0) && ((a < 0) != (b < 0))); }
+inline std::int32_t floor_div(std::int32_t a, std::int32_t b) noexcept {
+    return a / b - ((a % b != 0) && ((a < 0) != (b < 0)));
+}
 
 // The rows whose pixel centres lie between a triangle's lowest and highest corner (widened by
 // `reach` subpixels each way, for samples away from the centres), clamped to 0..height-1;
@@ -65,7 +69,8 @@ public:
 
     // `reach`: how far, in subpixels, a sample may lie from its pixel centre (0 without multisampling).
     explicit StripBins(const StripLayout& layout, std::int32_t reach = 0)
-        : height_(layout.height), rows_(layout.rows), reach_(reach), starts_(static_cast<std::size_t>(layout.count() + 1), 0) {}
+        : height_(layout.height), rows_(layout.rows), reach_(reach),
+          starts_(static_cast<std::size_t>(layout.count() + 1), 0) {}
 
     // Room for this many triangles: a facet is one unless clipping splits it.
     void reserve(std::size_t triangles) {
@@ -90,13 +95,15 @@ public:
         members_.resize(starts_.back());
         std::vector<std::uint32_t> filled(starts_.begin(), starts_.end() - 1);
         for (std::size_t t = 0; t < spans_.size(); ++t) {
-            for (int s = spans_[t].first; s <= spans_[t].last; ++s) members_[filled[static_cast<std::size_t>(s)]++] = static_cast<std::uint32_t>(t);
+            for (int s = spans_[t].first; s <= spans_[t].last; ++s)
+                members_[filled[static_cast<std::size_t>(s)]++] = static_cast<std::uint32_t>(t);
         }
     }
 
     template <typename Draw>
     void for_each_in(int s, Draw draw) const {
-        for (std::uint32_t k = starts_[static_cast<std::size_t>(s)]; k < starts_[static_cast<std::size_t>(s) + 1]; ++k) {
+        for (std::uint32_t k = starts_[static_cast<std::size_t>(s)]; k < starts_[static_cast<std::size_t>(s) + 1];
+             ++k) {
             draw(triangles_[members_[k]]);
         }
     }
@@ -106,7 +113,7 @@ private:
     int rows_;
     std::int32_t reach_;
     std::vector<Triangle> triangles_;
-    std::vector<RowRange> spans_;  // strips, not rows: first and last
+    std::vector<RowRange> spans_;        // strips, not rows: first and last
     std::vector<std::uint32_t> starts_;  // per strip, where its members begin; one past the end last
     std::vector<std::uint32_t> members_;
 };

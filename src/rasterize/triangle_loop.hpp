@@ -12,8 +12,8 @@
 
 #include <algorithm>
 #include <array>
-#include <concepts>
 #include <cmath>
+#include <concepts>
 #include <cstdint>
 #include <optional>
 
@@ -69,13 +69,17 @@ struct TriangleSetup {
 
 // Nothing for a triangle that covers nothing (its weights would divide by zero).
 template <typename Shader>
-std::optional<TriangleSetup<Shader>> set_up_triangle(const std::array<ShadedCorner<typename Shader::Varying>, 3>& corners,
-                                                     const Shader& shader) {
+std::optional<TriangleSetup<Shader>> set_up_triangle(
+    const std::array<ShadedCorner<typename Shader::Varying>, 3>& corners, const Shader& shader) {
     const std::array<SubpixelPoint, 3> points{corners[0].at, corners[1].at, corners[2].at};
     const std::int64_t twice_area = twice_signed_area(points);
     if (twice_area == 0) return std::nullopt;
     const std::array<WeightPlane, 2> planes = weight_planes(points[0], points[1], points[2], twice_area);
-    TriangleSetup<Shader> setup{points, planes[0], planes[1], corners[0].varying, corners[1].varying - corners[0].varying,
+    TriangleSetup<Shader> setup{points,
+                                planes[0],
+                                planes[1],
+                                corners[0].varying,
+                                corners[1].varying - corners[0].varying,
                                 corners[2].varying - corners[0].varying};
     // A Varying equal at all three corners (flat shading) is the same at every pixel: shaded
     // once here, the pixels only take depth and the write. The colour is the one pixel() would give.
@@ -88,13 +92,16 @@ std::optional<TriangleSetup<Shader>> set_up_triangle(const std::array<ShadedCorn
 
 // An orthographic triangle: Varying and depth step linearly along each span.
 template <typename Shader, typename DepthFormat>
-void fill_screen_linear(const TriangleSetup<Shader>& setup, const std::array<ShadedCorner<typename Shader::Varying>, 3>& corners,
-                        Framebuffer& colour, DepthBuffer* depth, const PixelRect& clip, DepthFormat stored, LaneBatch<Shader>& lanes) {
+void fill_screen_linear(const TriangleSetup<Shader>& setup,
+                        const std::array<ShadedCorner<typename Shader::Varying>, 3>& corners, Framebuffer& colour,
+                        DepthBuffer* depth, const PixelRect& clip, DepthFormat stored, LaneBatch<Shader>& lanes) {
     using Varying = typename Shader::Varying;
     const WeightPlane& w1 = setup.w1;  // not a structured binding: clang 14 cannot capture those
     const WeightPlane& w2 = setup.w2;
-    const Varying step = setup.along1 * static_cast<float>(w1.per_pixel_x()) + setup.along2 * static_cast<float>(w2.per_pixel_x());
-    const Varying step_y = setup.along1 * static_cast<float>(w1.per_pixel_y()) + setup.along2 * static_cast<float>(w2.per_pixel_y());
+    const Varying step =
+        setup.along1 * static_cast<float>(w1.per_pixel_x()) + setup.along2 * static_cast<float>(w2.per_pixel_x());
+    const Varying step_y =
+        setup.along1 * static_cast<float>(w1.per_pixel_y()) + setup.along2 * static_cast<float>(w2.per_pixel_y());
     const double z0 = corners[0].depth;
     const double z1 = corners[1].depth - z0, z2 = corners[2].depth - z0;
     const auto z_step = static_cast<float>(z1 * w1.per_pixel_x() + z2 * w2.per_pixel_x());
@@ -105,7 +112,8 @@ void fill_screen_linear(const TriangleSetup<Shader>& setup, const std::array<Sha
         const double a = w1.at(i, j), b = w2.at(i, j);
         Varying varying = setup.base + setup.along1 * static_cast<float>(a) + setup.along2 * static_cast<float>(b);
         const auto z_start = static_cast<float>(z0 + z1 * a + z2 * b);
-        std::uint8_t* out = pixels + (static_cast<std::size_t>(span.y) * width + static_cast<std::size_t>(span.x_begin)) * 3;
+        std::uint8_t* out =
+            pixels + (static_cast<std::size_t>(span.y) * width + static_cast<std::size_t>(span.x_begin)) * 3;
         float* nearest = depth != nullptr ? depth->row(span.y) + span.x_begin : nullptr;
         for (int k = 0; k < span.x_end - span.x_begin; ++k, out += 3, varying = varying + step) {
             if (nearest != nullptr) {
@@ -127,8 +135,9 @@ void fill_screen_linear(const TriangleSetup<Shader>& setup, const std::array<Sha
 // sum, the weights of the surface point seen there; the sum is 1 / w, so the view depth comes
 // with them.
 template <typename Shader, typename DepthFormat, PerspectiveRun::Precision kPrecision>
-void fill_perspective(const TriangleSetup<Shader>& setup, const std::array<ShadedCorner<typename Shader::Varying>, 3>& corners,
-                      Framebuffer& colour, DepthBuffer* depth, const PixelRect& clip, DepthFormat stored, LaneBatch<Shader>& lanes) {
+void fill_perspective(const TriangleSetup<Shader>& setup,
+                      const std::array<ShadedCorner<typename Shader::Varying>, 3>& corners, Framebuffer& colour,
+                      DepthBuffer* depth, const PixelRect& clip, DepthFormat stored, LaneBatch<Shader>& lanes) {
     const WeightPlane& w1 = setup.w1;
     const WeightPlane& w2 = setup.w2;
     const double inv0 = 1.0 / corners[0].depth, inv1 = 1.0 / corners[1].depth, inv2 = 1.0 / corners[2].depth;
@@ -137,7 +146,8 @@ void fill_perspective(const TriangleSetup<Shader>& setup, const std::array<Shade
     std::uint8_t* const pixels = colour.pixels();
     const std::size_t width = static_cast<std::size_t>(colour.width());
     rasterize_convex(setup.points, clip, [&](Span span) {
-        std::uint8_t* out = pixels + (static_cast<std::size_t>(span.y) * width + static_cast<std::size_t>(span.x_begin)) * 3;
+        std::uint8_t* out =
+            pixels + (static_cast<std::size_t>(span.y) * width + static_cast<std::size_t>(span.x_begin)) * 3;
         float* nearest = depth != nullptr ? depth->row(span.y) + span.x_begin : nullptr;
         if (setup.constant || DepthOnly<Shader>) {
             // Depth and one colour: a pixel at a time is quickest, the spans being short.
@@ -149,7 +159,8 @@ void fill_perspective(const TriangleSetup<Shader>& setup, const std::array<Shade
                     nearest[x - span.x_begin] = z;
                 }
                 if constexpr (!DepthOnly<Shader>) {
-                    out[0] = setup.constant_colour.r, out[1] = setup.constant_colour.g, out[2] = setup.constant_colour.b;
+                    out[0] = setup.constant_colour.r, out[1] = setup.constant_colour.g,
+                    out[2] = setup.constant_colour.b;
                 }
             }
             return;
@@ -178,7 +189,8 @@ void fill_perspective(const TriangleSetup<Shader>& setup, const std::array<Shade
 template <typename Shader, typename DepthFormat = FloatDepth, Interpolation kMode = Interpolation::screen_linear>
 void shade_triangle(Framebuffer& colour, DepthBuffer* depth,
                     const std::array<ShadedCorner<typename Shader::Varying>, 3>& corners, const Shader& shader,
-                    DepthFormat stored = {}, std::optional<PixelRect> rows = std::nullopt, LaneBatch<Shader>* batch = nullptr) {
+                    DepthFormat stored = {}, std::optional<PixelRect> rows = std::nullopt,
+                    LaneBatch<Shader>* batch = nullptr) {
     const std::optional<TriangleSetup<Shader>> setup = set_up_triangle(corners, shader);
     if (!setup) return;
     const PixelRect clip = rows.value_or(PixelRect{0, 0, colour.width(), colour.height()});
@@ -188,9 +200,11 @@ void shade_triangle(Framebuffer& colour, DepthBuffer* depth,
     if constexpr (kMode == Interpolation::screen_linear) {
         fill_screen_linear(*setup, corners, colour, depth, clip, stored, lanes);
     } else if constexpr (kMode == Interpolation::perspective) {
-        fill_perspective<Shader, DepthFormat, PerspectiveRun::Precision::double_>(*setup, corners, colour, depth, clip, stored, lanes);
+        fill_perspective<Shader, DepthFormat, PerspectiveRun::Precision::double_>(*setup, corners, colour, depth, clip,
+                                                                                  stored, lanes);
     } else {
-        fill_perspective<Shader, DepthFormat, PerspectiveRun::Precision::single>(*setup, corners, colour, depth, clip, stored, lanes);
+        fill_perspective<Shader, DepthFormat, PerspectiveRun::Precision::single>(*setup, corners, colour, depth, clip,
+                                                                                 stored, lanes);
     }
     if (batch == nullptr) lanes.flush();
 }

@@ -18,8 +18,8 @@ namespace raster {
 namespace {
 
 // Barycentric points where facets are checked: corners, edge midpoints, centroid.
-constexpr std::array<glm::dvec3, 7> kSamples{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.5, 0.5, 0}, {0, 0.5, 0.5},
-                                              {0.5, 0, 0.5}, {1.0 / 3, 1.0 / 3, 1.0 / 3}}};
+constexpr std::array<glm::dvec3, 7> kSamples{
+    {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.5, 0.5, 0}, {0, 0.5, 0.5}, {0.5, 0, 0.5}, {1.0 / 3, 1.0 / 3, 1.0 / 3}}};
 
 // The torus levels tried, about sqrt(2) apart; every sphere level is tried.
 constexpr std::array<int, 12> kTorusLevels{1, 2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64};
@@ -39,7 +39,8 @@ std::vector<int> levels_of(ShapeKind shape) {
 Mesh tessellate(ShapeKind shape, int level) {
     if (shape == ShapeKind::sphere) return sphere(level);
     if (level < 1 || level > kMaxTorusLevel) {
-        throw std::invalid_argument("torus level must be 1.." + std::to_string(kMaxTorusLevel) + ", got " + std::to_string(level));
+        throw std::invalid_argument("torus level must be 1.." + std::to_string(kMaxTorusLevel) + ", got " +
+                                    std::to_string(level));
     }
     return torus(12 * level, 8 * level);
 }
@@ -66,7 +67,9 @@ struct IntensityModel {
     double brightest;
     using Value = float;
     [[nodiscard]] Value value(glm::vec3 /*position*/, glm::vec3 normal) const { return lighting.intensity(normal); }
-    [[nodiscard]] double levels_apart(Value a, Value b) const { return std::abs(static_cast<double>(a) - b) * brightest; }
+    [[nodiscard]] double levels_apart(Value a, Value b) const {
+        return std::abs(static_cast<double>(a) - b) * brightest;
+    }
     [[nodiscard]] static Value mix(const std::array<Value, 3>& v, const glm::dvec3& b) {
         return static_cast<float>(b.x * v[0] + b.y * v[1] + b.z * v[2]);
     }
@@ -78,9 +81,12 @@ struct LinearModel {
     const LinearLighting& lighting;
     using Value = LinearRgb;
     [[nodiscard]] Value value(glm::vec3 position, glm::vec3 normal) const { return lighting.shade(position, normal); }
-    [[nodiscard]] static double levels(float v) { return 255.0 * srgb_from_linear_channel(std::clamp(double{v}, 0.0, 1.0)); }
+    [[nodiscard]] static double levels(float v) {
+        return 255.0 * srgb_from_linear_channel(std::clamp(double{v}, 0.0, 1.0));
+    }
     [[nodiscard]] double levels_apart(Value a, Value b) const {
-        return std::max({std::abs(levels(a.r) - levels(b.r)), std::abs(levels(a.g) - levels(b.g)), std::abs(levels(a.b) - levels(b.b))});
+        return std::max({std::abs(levels(a.r) - levels(b.r)), std::abs(levels(a.g) - levels(b.g)),
+                         std::abs(levels(a.b) - levels(b.b))});
     }
     [[nodiscard]] static Value mix(const std::array<Value, 3>& v, const glm::dvec3& b) {
         return v[0] * static_cast<float>(b.x) + v[1] * static_cast<float>(b.y) + v[2] * static_cast<float>(b.z);
@@ -100,9 +106,9 @@ double error_levels(ShapeKind shape, const Mesh& posed_mesh, const glm::mat4& mo
     // surface of curvature radius R px at |n . v| < sqrt(2 * 1.5 / R). A non-uniform scale bends
     // a radius r into as little as r * least^2 / most.
     const Stretch stretch = model_stretch(model);
-    const double radius_px = stretch.most > 0.0 ? tightest_radius(shape) * camera.scale() * stretch.least *
-                                                      stretch.least / stretch.most
-                                                : 0.0;
+    const double radius_px =
+        stretch.most > 0.0 ? tightest_radius(shape) * camera.scale() * stretch.least * stretch.least / stretch.most
+                           : 0.0;
     const double grazing = std::sqrt(3.0 / std::max(radius_px, 3.0));
     const bool faceted = posed_mesh.surface == Surface::faceted;
     double worst = 0.0;
@@ -118,7 +124,8 @@ double error_levels(ShapeKind shape, const Mesh& posed_mesh, const glm::mat4& mo
         }
         const Value flat = light.value(positions[0] / 3.0F + positions[1] / 3.0F + positions[2] / 3.0F, facet.normal);
         for (const glm::dvec3& b : kSamples) {
-            const glm::dvec3 world = b.x * glm::dvec3(positions[0]) + b.y * glm::dvec3(positions[1]) + b.z * glm::dvec3(positions[2]);
+            const glm::dvec3 world =
+                b.x * glm::dvec3(positions[0]) + b.y * glm::dvec3(positions[1]) + b.z * glm::dvec3(positions[2]);
             // The exact image shows, at this point's pixel, the first surface along the view line.
             const glm::dvec3 object(object_from_world * glm::dvec4(world, 1.0));
             const std::optional<double> t = first_hit(shape, object, object_view);
@@ -136,7 +143,8 @@ double error_levels(ShapeKind shape, const Mesh& posed_mesh, const glm::mat4& mo
             if (method == ShadingMethod::gouraud) {
                 estimate = Model::mix(corner_values, b);
             } else if (method == ShadingMethod::phong) {
-                const glm::dvec3 n = b.x * glm::dvec3(normals[0]) + b.y * glm::dvec3(normals[1]) + b.z * glm::dvec3(normals[2]);
+                const glm::dvec3 n =
+                    b.x * glm::dvec3(normals[0]) + b.y * glm::dvec3(normals[1]) + b.z * glm::dvec3(normals[2]);
                 estimate = light.value(glm::vec3(world), unit_or_zero(glm::vec3(n)));
             }
             worst = std::max(worst, light.levels_apart(estimate, exact));
@@ -166,7 +174,8 @@ template <typename Light>
 DetailChoice choose(ShapeKind shape, const glm::mat4& model, const OrthoCamera& camera, const Light& lighting) {
     for (int column = 0; column < 4; ++column) {
         for (int row = 0; row < 4; ++row) {
-            if (!std::isfinite(model[column][row])) throw std::invalid_argument("automatic detail needs a finite model matrix");
+            if (!std::isfinite(model[column][row]))
+                throw std::invalid_argument("automatic detail needs a finite model matrix");
         }
     }
     const double stretch = camera.scale() * model_stretch(model).most;
@@ -188,13 +197,14 @@ DetailChoice choose(ShapeKind shape, const glm::mat4& model, const OrthoCamera& 
 
 }  // namespace
 
-DetailChoice choose_detail(ShapeKind shape, const glm::mat4& model, const OrthoCamera& camera, const IntensityMaterial& material,
-                           std::span<const DirectionalLight> lights) {
+DetailChoice choose_detail(ShapeKind shape, const glm::mat4& model, const OrthoCamera& camera,
+                           const IntensityMaterial& material, std::span<const DirectionalLight> lights) {
     return choose(shape, model, camera, IntensityLighting(material, lights, -camera.direction()));
 }
 
-DetailChoice choose_detail(ShapeKind shape, const glm::mat4& model, const OrthoCamera& camera, const LinearMaterial& material,
-                           std::span<const DirectionalLight> lights, std::span<const PointLight> points) {
+DetailChoice choose_detail(ShapeKind shape, const glm::mat4& model, const OrthoCamera& camera,
+                           const LinearMaterial& material, std::span<const DirectionalLight> lights,
+                           std::span<const PointLight> points) {
     return choose(shape, model, camera, LinearLighting(material, lights, points, -camera.direction()));
 }
 
@@ -210,9 +220,10 @@ DetailPlan plan_detail(std::span<const Scene> samples) {
             if (!object.shape) continue;
             const auto* intensity = std::get_if<IntensityMaterial>(&object.material);
             const DetailChoice choice =
-                intensity != nullptr ? choose_detail(*object.shape, object.model, frame.camera, *intensity, frame.lights)
-                                  : choose_detail(*object.shape, object.model, frame.camera,
-                                                  std::get<LinearMaterial>(object.material), frame.lights, frame.point_lights);
+                intensity != nullptr
+                    ? choose_detail(*object.shape, object.model, frame.camera, *intensity, frame.lights)
+                    : choose_detail(*object.shape, object.model, frame.camera,
+                                    std::get<LinearMaterial>(object.material), frame.lights, frame.point_lights);
             std::optional<DetailChoice>& kept = plan.choices[i];
             if (!kept) {
                 kept = choice;

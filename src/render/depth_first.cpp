@@ -25,8 +25,10 @@ double share_of_screen(const std::vector<glm::dvec2>& points, int width, int hei
     if (points.empty()) return 0.0;
     glm::dvec2 low(std::numeric_limits<double>::infinity()), high(-std::numeric_limits<double>::infinity());
     for (const glm::dvec2& p : points) low = glm::min(low, p), high = glm::max(high, p);
-    const double w = std::clamp(high.x, 0.0, static_cast<double>(width)) - std::clamp(low.x, 0.0, static_cast<double>(width));
-    const double h = std::clamp(high.y, 0.0, static_cast<double>(height)) - std::clamp(low.y, 0.0, static_cast<double>(height));
+    const double w =
+        std::clamp(high.x, 0.0, static_cast<double>(width)) - std::clamp(low.x, 0.0, static_cast<double>(width));
+    const double h =
+        std::clamp(high.y, 0.0, static_cast<double>(height)) - std::clamp(low.y, 0.0, static_cast<double>(height));
     const double share = std::max(0.0, w) * std::max(0.0, h) / (static_cast<double>(width) * height);
     return share == share ? share : 1.0;  // NaN from a non-finite mesh: the whole screen
 }
@@ -38,7 +40,8 @@ double screen_cover(const Scene& scene, int width, int height) {
     for (const SceneObject& object : scene.objects) {
         if (!object.mesh) continue;
         std::vector<glm::dvec2> points;
-        for (const glm::vec3& corner : box_corners(*object.mesh, object.model)) points.push_back(scene.camera.screen_from_world(corner));
+        for (const glm::vec3& corner : box_corners(*object.mesh, object.model))
+            points.push_back(scene.camera.screen_from_world(corner));
         cover += share_of_screen(points, width, height);
     }
     return cover;

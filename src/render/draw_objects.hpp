@@ -45,11 +45,12 @@ struct Multisampling {
 
 template <detail::Interpolation kMode, typename Camera, typename FrontFor>
 std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& scene, DepthBuffer& depth,
-                           std::optional<glm::vec3> eye, detail::WorkerTeam& team, FrontFor front_for, Multisampling multisampling,
-                           RenderOptions::DepthFirst order) {
+                           std::optional<glm::vec3> eye, detail::WorkerTeam& team, FrontFor front_for,
+                           Multisampling multisampling, RenderOptions::DepthFirst order) {
     detail::SampleBuffer* const samples = multisampling.buffer;
     const bool depth_test = needs_depth(scene);
-    if (depth_test && samples == nullptr) depth.resize(framebuffer.width(), framebuffer.height());  // each strip clears its own rows
+    if (depth_test && samples == nullptr)
+        depth.resize(framebuffer.width(), framebuffer.height());                      // each strip clears its own rows
     DepthBuffer* const tested = depth_test && samples == nullptr ? &depth : nullptr;  // samples keep their own depths
     const glm::vec3 to_eye = -scene.camera.direction();
     const detail::StripLayout layout = detail::StripLayout::of(framebuffer.width(), framebuffer.height());
@@ -83,15 +84,17 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
             posing.vertices(begin, end);
             front.vertices(begin, end);  // reads vertex i's posed data only
         });
-        std::vector<detail::StripBins<typename Shader::Varying>> bins(static_cast<std::size_t>(batches(facets, facet_batch)),
-                                                                      detail::StripBins<typename Shader::Varying>(layout, samples != nullptr ? kSubpixelOne / 2 : 0));
+        std::vector<detail::StripBins<typename Shader::Varying>> bins(
+            static_cast<std::size_t>(batches(facets, facet_batch)),
+            detail::StripBins<typename Shader::Varying>(layout, samples != nullptr ? kSubpixelOne / 2 : 0));
         std::vector<std::size_t> counted(bins.size());
         team.for_each(static_cast<int>(bins.size()), [&](int b) {
             const auto [begin, end] = range(b, facets, facet_batch);
             detail::StripBins<typename Shader::Varying>& batch = bins[static_cast<std::size_t>(b)];
             batch.reserve(end - begin);
             posing.facets(begin, end);  // facet f reads its own posed corners and normal only
-            counted[static_cast<std::size_t>(b)] = front.facets(begin, end, [&](const auto& corners) { batch.add(corners); });
+            counted[static_cast<std::size_t>(b)] =
+                front.facets(begin, end, [&](const auto& corners) { batch.add(corners); });
             batch.finish();
         });
         team.for_each(layout.count(), [&](int s) {
@@ -101,9 +104,11 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
             for (const auto& batch : bins) {
                 batch.for_each_in(s, [&](const auto& corners) {
                     if (samples != nullptr) {
-                        detail::shade_triangle_samples<Shader, kMode>(*samples, depth_test, corners, shader, strip, multisampling.offsets, &lanes);
+                        detail::shade_triangle_samples<Shader, kMode>(*samples, depth_test, corners, shader, strip,
+                                                                      multisampling.offsets, &lanes);
                     } else {
-                        detail::shade_triangle<Shader, detail::FloatDepth, kMode>(framebuffer, tested, corners, shader, {}, strip, &lanes);
+                        detail::shade_triangle<Shader, detail::FloatDepth, kMode>(framebuffer, tested, corners, shader,
+                                                                                  {}, strip, &lanes);
                     }
                 });
             }
@@ -112,9 +117,10 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
         cleared = true;
         return std::accumulate(counted.begin(), counted.end(), std::size_t{0});
     };
-    const bool depth_pass = depth_test && (order == RenderOptions::DepthFirst::always ||
-                                           (order == RenderOptions::DepthFirst::automatic &&
-                                            detail::depth_first(scene, depth_test, framebuffer.width(), framebuffer.height())));
+    const bool depth_pass =
+        depth_test && (order == RenderOptions::DepthFirst::always ||
+                       (order == RenderOptions::DepthFirst::automatic &&
+                        detail::depth_first(scene, depth_test, framebuffer.width(), framebuffer.height())));
     if (depth_pass) {
         // Every object's depth first, then the shading pass colours only the fragments at the
         // nearest depth: the same picture (the last facet at that depth wins, as it would),
@@ -141,21 +147,21 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
     return drawn;
 }
 
-inline std::size_t draw(Framebuffer& framebuffer, const Scene& scene, DepthBuffer& depth, detail::WorkerTeam& team, RenderOptions::DepthFirst order,
-                 Multisampling multisampling = {}) {
+inline std::size_t draw(Framebuffer& framebuffer, const Scene& scene, DepthBuffer& depth, detail::WorkerTeam& team,
+                        RenderOptions::DepthFirst order, Multisampling multisampling = {}) {
     // Orthographic: attributes are linear on screen, and the direction toward the viewer is the same at every pixel.
-    return render_objects<detail::Interpolation::screen_linear>(framebuffer, scene, depth, std::nullopt, team,
-                                                                [&](const Mesh& mesh, const auto& shader) {
-                                                                    return detail::OrthoFront(scene.camera, mesh, shader);
-                                                                },
-                                                                multisampling, order);
+    return render_objects<detail::Interpolation::screen_linear>(
+        framebuffer, scene, depth, std::nullopt, team,
+        [&](const Mesh& mesh, const auto& shader) { return detail::OrthoFront(scene.camera, mesh, shader); },
+        multisampling, order);
 }
 
-inline std::size_t draw(Framebuffer& framebuffer, const PerspectiveScene& scene, DepthBuffer& depth, detail::WorkerTeam& team,
-                 RenderOptions::DepthFirst order, Multisampling multisampling = {}) {
+inline std::size_t draw(Framebuffer& framebuffer, const PerspectiveScene& scene, DepthBuffer& depth,
+                        detail::WorkerTeam& team, RenderOptions::DepthFirst order, Multisampling multisampling = {}) {
     // Linear light takes the direction toward the eye at every point.
     return render_objects<detail::Interpolation::perspective>(
-        framebuffer, scene, depth, scene.camera.eye(), team, [&](const Mesh& mesh, const auto& shader) {
+        framebuffer, scene, depth, scene.camera.eye(), team,
+        [&](const Mesh& mesh, const auto& shader) {
             return detail::PerspectiveFront(framebuffer, scene.camera, mesh, shader, detail::kGuardBandPixels);
         },
         multisampling, order);

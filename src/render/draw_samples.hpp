@@ -25,16 +25,19 @@ constexpr std::size_t kMaxSampleBufferBytes = std::size_t{1} << 30;
 // samples of the frame would not fit in kMaxSampleBufferBytes) draws a whole pass at each
 // sample position. `alpha`, for a scene that keeps depth, receives the share of samples covered.
 template <typename Camera>
-std::size_t draw_samples(Framebuffer& framebuffer, const BasicScene<Camera>& scene, DepthBuffer& depth, detail::WorkerTeam& team,
-                         RenderOptions options, detail::SampleBuffer& buffer, std::vector<std::uint8_t>* alpha) {
+std::size_t draw_samples(Framebuffer& framebuffer, const BasicScene<Camera>& scene, DepthBuffer& depth,
+                         detail::WorkerTeam& team, RenderOptions options, detail::SampleBuffer& buffer,
+                         std::vector<std::uint8_t>* alpha) {
     const std::span<const glm::vec2> offsets = sample_offsets(options.samples);
     if (offsets.size() == 1) return draw(framebuffer, scene, depth, team, options.depth_first);
-    const std::size_t pixels = static_cast<std::size_t>(framebuffer.width()) * static_cast<std::size_t>(framebuffer.height());
+    const std::size_t pixels =
+        static_cast<std::size_t>(framebuffer.width()) * static_cast<std::size_t>(framebuffer.height());
     if (!options.shade_every_sample && pixels * offsets.size() * 7 <= kMaxSampleBufferBytes) {
         std::array<detail::SampleOffset, detail::kMaxSamples> at{};
         for (std::size_t s = 0; s < offsets.size(); ++s) {
             const glm::dvec2 o(offsets[s]);
-            at[s] = {static_cast<std::int32_t>(std::lround(o.x * kSubpixelOne)), static_cast<std::int32_t>(std::lround(o.y * kSubpixelOne)), o.x, o.y};
+            at[s] = {static_cast<std::int32_t>(std::lround(o.x * kSubpixelOne)),
+                     static_cast<std::int32_t>(std::lround(o.y * kSubpixelOne)), o.x, o.y};
         }
         buffer.resize(framebuffer.width(), framebuffer.height(), static_cast<int>(offsets.size()), scene.background);
         std::uint8_t* coverage = nullptr;
@@ -44,7 +47,8 @@ std::size_t draw_samples(Framebuffer& framebuffer, const BasicScene<Camera>& sce
         } else if (alpha != nullptr) {
             alpha->clear();  // an opaque scene has no coverage to give
         }
-        return draw(framebuffer, scene, depth, team, options.depth_first, {&buffer, std::span(at.data(), offsets.size()), coverage});
+        return draw(framebuffer, scene, depth, team, options.depth_first,
+                    {&buffer, std::span(at.data(), offsets.size()), coverage});
     }
     // Only a caller that takes the alpha gets the surfaces' colour apart from the background.
     const bool with_alpha = alpha != nullptr && scene.keep_depth;

@@ -67,7 +67,8 @@ ModelStage::ModelStage(std::shared_ptr<const Model> model, const ModelView& view
         for (glm::vec3& p : mesh->positions) p = glm::vec3(unit_from_world(glm::dvec3(p)));
         meshes_.push_back(std::move(mesh));
     }
-    if (!finite(view.up) || glm::length(view.up) == 0.0) throw std::invalid_argument("the up direction must be a non-zero vector");
+    if (!finite(view.up) || glm::length(view.up) == 0.0)
+        throw std::invalid_argument("the up direction must be a non-zero vector");
     if (!(view.fov_degrees > 0.0 && view.fov_degrees < 180.0)) {
         throw std::invalid_argument("field of view must be between 0 and 180 degrees, got " + shown(view.fov_degrees));
     }
@@ -84,51 +85,74 @@ ModelStage::ModelStage(std::shared_ptr<const Model> model, const ModelView& view
         const double distance = view.orthographic ? 3.0 : 1.0 / std::sin(narrower);
         eye = target_ + mirrored(three_quarter_direction(view.up)) * distance;
     }
-    if (!view.eye && !finite(eye)) throw std::invalid_argument("--fov is too narrow to frame the model from any finite distance");
-    if (!finite(eye) || !finite(target_)) throw std::invalid_argument("--eye and --target must lie within float range of the model");
+    if (!view.eye && !finite(eye))
+        throw std::invalid_argument("--fov is too narrow to frame the model from any finite distance");
+    if (!finite(eye) || !finite(target_))
+        throw std::invalid_argument("--eye and --target must lie within float range of the model");
 
     if (!(glm::length(target_ - eye) > 1e-12)) {
-        throw std::invalid_argument(view.target ? "--eye and --target are the same point; the camera needs a direction to look in"
-                                                : "--eye is the middle of the model, where the camera looks; move it, or give --target");
+        throw std::invalid_argument(
+            view.target ? "--eye and --target are the same point; the camera needs a direction to look in"
+                        : "--eye is the middle of the model, where the camera looks; move it, or give --target");
     }
     // The camera's axes, for the default lights: forward, right and up as the camera sees them.
     const glm::dvec3 forward = glm::normalize(target_ - eye);
     const glm::dvec3 side = glm::cross(up_, forward);
-    if (!(glm::length(side) > 1e-9)) throw std::invalid_argument("the view runs along the up direction; give another --up or --eye");
+    if (!(glm::length(side) > 1e-9))
+        throw std::invalid_argument("the view runs along the up direction; give another --up or --eye");
     const glm::dvec3 right = glm::normalize(side), camera_up = glm::cross(forward, right);
     std::vector<DirectionalLight> lights;
     const glm::dvec3 key = view.light ? mirrored(*view.light) : -forward + 0.9 * camera_up - 0.7 * right;
-    if (!finite(key) || glm::length(key) == 0.0) throw std::invalid_argument("the light direction must be a non-zero vector");
+    if (!finite(key) || glm::length(key) == 0.0)
+        throw std::invalid_argument("the light direction must be a non-zero vector");
     lights.push_back({glm::vec3(glm::normalize(key)), 0.85F});
     // A dim fill from the other side, so that no face is left black.
     lights.push_back({glm::vec3(glm::normalize(-glm::normalize(key) + 0.3 * -forward)), 0.3F});
 
     if (view.orthographic) {
-        if (view.near || view.far) throw std::invalid_argument("--near and --far set a perspective lens; an orthographic view draws the whole model");
-        orthographic_ = Scene{OrthoCamera::look_at(width, height, glm::vec3(eye), glm::vec3(target_), glm::vec3(up_)), view.background, lights,
-                       {}, {}, {}, view.transparent};
+        if (view.near || view.far)
+            throw std::invalid_argument(
+                "--near and --far set a perspective lens; an orthographic view draws the whole model");
+        orthographic_ = Scene{OrthoCamera::look_at(width, height, glm::vec3(eye), glm::vec3(target_), glm::vec3(up_)),
+                              view.background,
+                              lights,
+                              {},
+                              {},
+                              {},
+                              view.transparent};
         return;
     }
     if (view.near && view.far && !(*view.near < *view.far)) {
-        throw std::invalid_argument("--near must be less than --far, got " + shown(*view.near) + " and " + shown(*view.far));
+        throw std::invalid_argument("--near must be less than --far, got " + shown(*view.near) + " and " +
+                                    shown(*view.far));
     }
     // Near and far hold the sphere, wherever the turn about the target takes it.
     const double reach = 1.0 + 2.0 * glm::length(target_);
     const double from_centre = glm::length(eye);
     const double near = view.near ? *view.near / radius : std::max((from_centre - reach) * 0.9, 1e-3);
     const double far = view.far ? *view.far / radius : (from_centre + reach) * 1.1;
-    if (!(near >= kNearest)) throw std::invalid_argument("--near must be at least " + shown(kNearest * radius) + " for a model of this size");
+    if (!(near >= kNearest))
+        throw std::invalid_argument("--near must be at least " + shown(kNearest * radius) +
+                                    " for a model of this size");
     if (!(far <= kFarthest)) {
-        throw std::invalid_argument(view.far ? "--far must be at most " + shown(kFarthest * radius) + " for a model of this size"
-                                             : "--eye is too far from the model to draw it in perspective; move it closer, or add --ortho");
+        throw std::invalid_argument(
+            view.far ? "--far must be at most " + shown(kFarthest * radius) + " for a model of this size"
+                     : "--eye is too far from the model to draw it in perspective; move it closer, or add --ortho");
     }
     if (!(far > near)) {
-        throw std::invalid_argument(view.far ? "--far ends before the model begins; give a larger --far, or a --near before it"
-                                             : "--near lies beyond the model; give a smaller --near, or a --far beyond it");
+        throw std::invalid_argument(
+            view.far ? "--far ends before the model begins; give a larger --far, or a --near before it"
+                     : "--near lies beyond the model; give a smaller --near, or a --far beyond it");
     }
     const PerspectiveCamera::Lens lens{view.fov_degrees, near, far};
-    perspective_ = PerspectiveScene{PerspectiveCamera::look_at(width, height, glm::vec3(eye), glm::vec3(target_), glm::vec3(up_), lens),
-                              view.background, lights, {}, {}, {}, view.transparent};
+    perspective_ = PerspectiveScene{
+        PerspectiveCamera::look_at(width, height, glm::vec3(eye), glm::vec3(target_), glm::vec3(up_), lens),
+        view.background,
+        lights,
+        {},
+        {},
+        {},
+        view.transparent};
 }
 
 std::vector<SceneObject> ModelStage::objects(double turn) const {
@@ -163,11 +187,13 @@ std::size_t ModelStage::render(Framebuffer& frame, Renderer& renderer, double tu
     return posed_scene(turn, [&](const auto& scene) { return renderer.render(frame, scene); });
 }
 
-std::vector<std::string> replace_diffuse_maps(Model& model, const std::shared_ptr<const Texture>& texture, const std::string& texture_name) {
+std::vector<std::string> replace_diffuse_maps(Model& model, const std::shared_ptr<const Texture>& texture,
+                                              const std::string& texture_name) {
     std::vector<std::string> warnings;
     for (ModelPart& part : model.parts) {
         if (part.mesh.uvs.empty()) {
-            const std::string name = part.material_name.empty() ? "the default material" : "material '" + part.material_name + "'";
+            const std::string name =
+                part.material_name.empty() ? "the default material" : "material '" + part.material_name + "'";
             warnings.push_back(texture_name + ": " + name + " has no texture coordinates; drawing its colour");
             continue;
         }

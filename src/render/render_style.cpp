@@ -24,7 +24,8 @@ BasicScene<Camera> flattened(BasicScene<Camera> scene) {
     for (SceneObject& object : scene.objects) {
         if (auto* material = std::get_if<LinearMaterial>(&object.material); material != nullptr && object.texture) {
             const LinearRgb mean = mean_colour(*object.texture);
-            material->diffuse = {material->diffuse.r * mean.r, material->diffuse.g * mean.g, material->diffuse.b * mean.b};
+            material->diffuse = {material->diffuse.r * mean.r, material->diffuse.g * mean.g,
+                                 material->diffuse.b * mean.b};
         }
         object.texture = nullptr;
         object.shading = ShadingMethod::flat;
@@ -36,13 +37,17 @@ Rgb line_colour(const SceneObject& object) {
     if (const auto* material = std::get_if<IntensityMaterial>(&object.material)) return material->base;
     const auto& material = std::get<LinearMaterial>(object.material);
     const LinearRgb mean = object.texture ? mean_colour(*object.texture) : LinearRgb{1.0F, 1.0F, 1.0F};
-    return srgb_from_linear(LinearRgb{material.emissive.r + material.diffuse.r * mean.r, material.emissive.g + material.diffuse.g * mean.g,
+    return srgb_from_linear(LinearRgb{material.emissive.r + material.diffuse.r * mean.r,
+                                      material.emissive.g + material.diffuse.g * mean.g,
                                       material.emissive.b + material.diffuse.b * mean.b});
 }
 
-// Halves up, as fills and lines round (doc/conventions.md#pixels); the clamp keeps int safe for orthographic ends far off.
+// Halves up, as fills and lines round (doc/conventions.md#pixels); the clamp keeps int safe for orthographic ends far
+// off.
 glm::ivec2 nearest_pixel(glm::dvec2 screen) {
-    const auto round = [](double v) { return static_cast<int>(std::clamp(std::floor(v + 0.5), -16777216.0, 16777216.0)); };
+    const auto round = [](double v) {
+        return static_cast<int>(std::clamp(std::floor(v + 0.5), -16777216.0, 16777216.0));
+    };
     return {round(screen.x), round(screen.y)};
 }
 
@@ -51,7 +56,8 @@ template <typename Facing, typename DrawEdge>
 std::size_t front_edges(const Mesh& mesh, Facing facing, DrawEdge draw_edge) {
     std::size_t drawn = 0;
     for (const Facet& facet : mesh.facets) {
-        const glm::vec3 a = mesh.positions[facet.corners[0]], b = mesh.positions[facet.corners[1]], c = mesh.positions[facet.corners[2]];
+        const glm::vec3 a = mesh.positions[facet.corners[0]], b = mesh.positions[facet.corners[1]],
+                        c = mesh.positions[facet.corners[2]];
         if (!facing(facet.normal, a)) continue;
         draw_edge(a, b);
         draw_edge(b, c);
@@ -87,10 +93,12 @@ std::size_t draw_wireframe(Framebuffer& framebuffer, const Scene& scene) {
         if (!object.mesh) continue;
         const Mesh mesh = posed(*object.mesh, object.model, PoseParts{false, true});
         const Rgb colour = line_colour(object);
-        drawn += front_edges(mesh, [&](glm::vec3 normal, glm::vec3) { return glm::dot(normal, direction) < 0.0F; },
-                             [&](glm::vec3 a, glm::vec3 b) {
-                                 draw_line(framebuffer, nearest_pixel(scene.camera.screen_from_world(a)), nearest_pixel(scene.camera.screen_from_world(b)), colour);
-                             });
+        drawn += front_edges(
+            mesh, [&](glm::vec3 normal, glm::vec3) { return glm::dot(normal, direction) < 0.0F; },
+            [&](glm::vec3 a, glm::vec3 b) {
+                draw_line(framebuffer, nearest_pixel(scene.camera.screen_from_world(a)),
+                          nearest_pixel(scene.camera.screen_from_world(b)), colour);
+            });
     }
     return drawn;
 }
@@ -104,12 +112,14 @@ std::size_t draw_wireframe(Framebuffer& framebuffer, const PerspectiveScene& sce
         if (!object.mesh) continue;
         const Mesh mesh = posed(*object.mesh, object.model, PoseParts{false, true});
         const Rgb colour = line_colour(object);
-        drawn += front_edges(mesh, [&](glm::vec3 normal, glm::vec3 corner) { return glm::dot(normal, corner - eye) < 0.0F; },
-                             [&](glm::vec3 a, glm::vec3 b) {
-                                 glm::dvec4 from = scene.camera.clip_from_world(a), to = scene.camera.clip_from_world(b);
-                                 if (!clip_segment(planes, from, to)) return;
-                                 draw_line(framebuffer, nearest_pixel(scene.camera.screen_from_clip(from)), nearest_pixel(scene.camera.screen_from_clip(to)), colour);
-                             });
+        drawn += front_edges(
+            mesh, [&](glm::vec3 normal, glm::vec3 corner) { return glm::dot(normal, corner - eye) < 0.0F; },
+            [&](glm::vec3 a, glm::vec3 b) {
+                glm::dvec4 from = scene.camera.clip_from_world(a), to = scene.camera.clip_from_world(b);
+                if (!clip_segment(planes, from, to)) return;
+                draw_line(framebuffer, nearest_pixel(scene.camera.screen_from_clip(from)),
+                          nearest_pixel(scene.camera.screen_from_clip(to)), colour);
+            });
     }
     return drawn;
 }

@@ -16,7 +16,8 @@ namespace {
 
 // The threads a render uses: the count asked for, 0 meaning one per core, at most kMaxThreads.
 int thread_count(int asked) {
-    if (asked < 0) throw std::invalid_argument("thread count must be 0 (one per core) or more, got " + std::to_string(asked));
+    if (asked < 0)
+        throw std::invalid_argument("thread count must be 0 (one per core) or more, got " + std::to_string(asked));
     const int cores = available_cores();
     return std::clamp(asked == 0 ? cores : asked, 1, kMaxThreads);
 }
@@ -39,8 +40,11 @@ std::size_t render(Framebuffer& framebuffer, const PerspectiveScene& scene, Dept
 
 Renderer::Renderer(RenderOptions options)
     : team_(std::make_unique<detail::WorkerTeam>(thread_count(options.threads))),
-      samples_buffer_(std::make_unique<detail::SampleBuffer>()),
-      options_{options.threads, static_cast<int>(sample_offsets(options.samples).size()), options.shade_every_sample, options.depth_first} {}
+      samples_buffer_(std::make_unique<detail::SampleBuffer>()), options_{options.threads,
+                                                                          static_cast<int>(
+                                                                              sample_offsets(options.samples).size()),
+                                                                          options.shade_every_sample,
+                                                                          options.depth_first} {}
 Renderer::~Renderer() = default;
 Renderer::Renderer(Renderer&&) noexcept = default;
 Renderer& Renderer::operator=(Renderer&&) noexcept = default;

@@ -15,9 +15,11 @@ SampleResolve::SampleResolve(int width, int height, bool with_alpha)
 }
 
 void SampleResolve::add(const Framebuffer& pass, std::span<const std::uint8_t> coverage) {
-    if (pass.width() != width_ || pass.height() != height_) throw std::invalid_argument("a sample pass differs in size from its frame");
+    if (pass.width() != width_ || pass.height() != height_)
+        throw std::invalid_argument("a sample pass differs in size from its frame");
     const std::size_t pixels = static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_);
-    if (with_alpha_ && coverage.size() != pixels) throw std::invalid_argument("a sample pass needs its coverage for a transparent frame");
+    if (with_alpha_ && coverage.size() != pixels)
+        throw std::invalid_argument("a sample pass needs its coverage for a transparent frame");
     const std::uint8_t* bytes = pass.bytes().data();
     const std::array<float, 256>& linear = linear_from_srgb_bytes();
     for (std::size_t i = 0; i < pixels; ++i) {
@@ -31,7 +33,8 @@ void SampleResolve::add(const Framebuffer& pass, std::span<const std::uint8_t> c
 }
 
 void SampleResolve::resolve(Framebuffer& out, Rgb background, std::vector<std::uint8_t>* alpha) const {
-    if (out.width() != width_ || out.height() != height_) throw std::invalid_argument("a resolved frame differs in size from its passes");
+    if (out.width() != width_ || out.height() != height_)
+        throw std::invalid_argument("a resolved frame differs in size from its passes");
     const std::size_t pixels = static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_);
     if (alpha != nullptr && with_alpha_) alpha->assign(pixels, 255);
     std::uint8_t* bytes = out.pixels();

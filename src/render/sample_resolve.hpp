@@ -25,7 +25,7 @@ private:
     int height_;
     bool with_alpha_;
     int passes_ = 0;
-    std::vector<float> sums_;          // three per pixel
+    std::vector<float> sums_;  // three per pixel
     std::vector<std::uint16_t> covered_;
 };
 

@@ -1,8 +1,8 @@
 // The diary's scenes: one table and the poses it names; stays whole so each reads by its entry.
 #include <raster/scenes/diary_scenes.hpp>
 
-#include <raster/scenes/scenes.hpp>
 #include <raster/geometry/shapes.hpp>
+#include <raster/scenes/scenes.hpp>
 
 #include <algorithm>
 #include <array>
@@ -33,8 +33,23 @@ constexpr std::array<SceneInfo, 15> kScenes{{
     {"shaders", "0.1.7", "Phong (left) against Gouraud (right), side by side", 360},
 }};
 
-enum SceneId { kLitCube, kDodecahedron, kOrbit, kFacetedSphere, kSmoothSphere, kGlossySphere, kSquash,
-               kPhongSphere, kTwoSpheres, kTorus, kMaterials, kThreeLights, kPointLights, kPointLight, kShaders };
+enum SceneId {
+    kLitCube,
+    kDodecahedron,
+    kOrbit,
+    kFacetedSphere,
+    kSmoothSphere,
+    kGlossySphere,
+    kSquash,
+    kPhongSphere,
+    kTwoSpheres,
+    kTorus,
+    kMaterials,
+    kThreeLights,
+    kPointLights,
+    kPointLight,
+    kShaders
+};
 // The switches below go by position in kScenes: these keep the two lists in step.
 static_assert(kScenes[kLitCube].name == "lit-cube" && kScenes[kDodecahedron].name == "dodecahedron" &&
               kScenes[kOrbit].name == "orbit" && kScenes[kFacetedSphere].name == "faceted-sphere" &&
@@ -47,9 +62,9 @@ static_assert(kScenes[kLitCube].name == "lit-cube" && kScenes[kDodecahedron].nam
 // The scenes of the diary's Phase 2 (0.1.0 on) light in linear colour.
 constexpr bool is_phase2(std::ptrdiff_t id) { return id >= kMaterials; }
 
-constexpr Rgb kShapeColour{52, 110, 210};   // #346ED2, the diary's blue
-constexpr Rgb kSecondColour{210, 90, 52};   // the smaller sphere of 0.0.16
-constexpr Rgb kTerracotta{185, 72, 58};     // the ground of the 0.0.16 still
+constexpr Rgb kShapeColour{52, 110, 210};  // #346ED2, the diary's blue
+constexpr Rgb kSecondColour{210, 90, 52};  // the smaller sphere of 0.0.16
+constexpr Rgb kTerracotta{185, 72, 58};    // the ground of the 0.0.16 still
 constexpr glm::vec3 kSunFromRight{1.0F, 1.0F, -1.0F};
 constexpr glm::vec3 kLowSun{1.0F, 0.5F, -1.0F};
 constexpr glm::vec3 kHighLeftLamp{-10.0F, 10.0F, -10.0F};
@@ -85,7 +100,8 @@ void add_phase2_lights(Scene& scene, std::ptrdiff_t id) {
 }
 
 LinearMaterial torus_material(std::ptrdiff_t id) {
-    return LinearMaterial::from_srgb(kEmissive, kDiffuse, id < kPointLights ? kFirstSpecular : kSpecular, kPhongShininess);
+    return LinearMaterial::from_srgb(kEmissive, kDiffuse, id < kPointLights ? kFirstSpecular : kSpecular,
+                                     kPhongShininess);
 }
 
 glm::mat4 scale(glm::vec3 s) { return glm::scale(glm::mat4(1.0F), s); }
@@ -170,8 +186,8 @@ DiaryScene::DiaryScene(std::string_view name) : info_(nullptr), analytic_(ShapeK
     case kShaders: shape_ = std::make_shared<const Mesh>(torus(48, 32)); break;
     case kPointLight:  // the lamp's marker over the diary's trapezoid of ground
         shape_ = std::make_shared<const Mesh>(sphere(2));
-        ground_ = std::make_shared<const Mesh>(ground_quad({-0.9F, -0.7F, -0.9F}, {0.9F, -0.7F, -0.9F},
-                                                           {0.6F, -0.7F, 0.9F}, {-0.6F, -0.7F, 0.9F}));
+        ground_ = std::make_shared<const Mesh>(
+            ground_quad({-0.9F, -0.7F, -0.9F}, {0.9F, -0.7F, -0.9F}, {0.6F, -0.7F, 0.9F}, {-0.6F, -0.7F, 0.9F}));
         break;
     default: shape_ = std::make_shared<const Mesh>(sphere(4)); break;
     }
@@ -210,14 +226,16 @@ Scene DiaryScene::untagged_still(int width, int height) const {
     }
     case kFacetedSphere: {
         Scene scene = lit_scene(raised, kSunFromRight);
-        scene.objects.push_back({still_shape_, scale(0.5F), IntensityMaterial::matte(kShapeColour, 0.1F), ShadingMethod::flat});
+        scene.objects.push_back(
+            {still_shape_, scale(0.5F), IntensityMaterial::matte(kShapeColour, 0.1F), ShadingMethod::flat});
         return scene;
     }
     case kSmoothSphere:
     case kGlossySphere: {
         Scene scene = lit_scene(raised, kSunFromRight);
         const bool glossy = info_ - kScenes.data() == kGlossySphere;
-        scene.objects.push_back({still_shape_, scale(0.5F), glossy ? shiny : IntensityMaterial::matte(kShapeColour, 0.2F),
+        scene.objects.push_back({still_shape_, scale(0.5F),
+                                 glossy ? shiny : IntensityMaterial::matte(kShapeColour, 0.2F),
                                  ShadingMethod::gouraud});
         return scene;
     }
@@ -233,7 +251,8 @@ Scene DiaryScene::untagged_still(int width, int height) const {
     }
     case kTwoSpheres: {
         Scene scene = lit_scene(OrthoCamera::look_at(width, height, {0.0F, 0.5F, -1.0F}), kHighLeftLamp);
-        scene.objects.push_back({ground_, glm::mat4(1.0F), IntensityMaterial::matte(kTerracotta, 0.15F), ShadingMethod::flat});
+        scene.objects.push_back(
+            {ground_, glm::mat4(1.0F), IntensityMaterial::matte(kTerracotta, 0.15F), ShadingMethod::flat});
         scene.objects.push_back({shape_, placed({0.0F, 0.25F, 0.0F}, 0.5F), shiny, ShadingMethod::phong});
         return scene;
     }
@@ -262,14 +281,17 @@ Scene DiaryScene::untagged_frame(int width, int height, int index, int count) co
         return scene;
     }
     case kOrbit: {
-        Scene scene = lit_scene(clip.second ? pinned : OrthoCamera::look_at(width, height, orbit_eye(clip.u)), kSunFromRight);
-        scene.objects.push_back({shape_, clip.second ? tumble(clip.u, 0.75F) : scale(0.75F), matte, ShadingMethod::flat});
+        Scene scene =
+            lit_scene(clip.second ? pinned : OrthoCamera::look_at(width, height, orbit_eye(clip.u)), kSunFromRight);
+        scene.objects.push_back(
+            {shape_, clip.second ? tumble(clip.u, 0.75F) : scale(0.75F), matte, ShadingMethod::flat});
         return scene;
     }
     case kFacetedSphere: {
         const double eased = ease_in_out_cubic(clip.u);
         Scene scene = lit_scene(clip.second ? pinned : OrthoCamera::look_at(width, height, orbit_eye(eased)), kLowSun);
-        scene.objects.push_back({shape_, clip.second ? tumble(eased, 0.75F) : scale(0.75F), matte, ShadingMethod::flat});
+        scene.objects.push_back(
+            {shape_, clip.second ? tumble(eased, 0.75F) : scale(0.75F), matte, ShadingMethod::flat});
         return scene;
     }
     case kTwoSpheres: {
@@ -282,13 +304,14 @@ Scene DiaryScene::untagged_frame(int width, int height, int index, int count) co
     }
     case kTorus: {
         Scene scene = lit_scene(OrthoCamera::look_at(width, height, {0.0F, 0.5F, -1.0F}), kLowSun);
-        scene.objects.push_back({shape_, tumble_rotation(tumble_angle(index, count)) * scale(0.8F), shiny, ShadingMethod::phong});
+        scene.objects.push_back(
+            {shape_, tumble_rotation(tumble_angle(index, count)) * scale(0.8F), shiny, ShadingMethod::phong});
         return scene;
     }
     default: {  // the orbit-then-squash clips of 0.0.12 to 0.0.15
         const auto id = info_ - kScenes.data();
-        Scene scene = lit_scene(clip.second ? pinned : OrthoCamera::look_at(width, height, orbit_eye(ease_in_out_cubic(clip.u))),
-                                kLowSun);
+        Scene scene = lit_scene(
+            clip.second ? pinned : OrthoCamera::look_at(width, height, orbit_eye(ease_in_out_cubic(clip.u))), kLowSun);
         const bool deep = id == kSquash || id == kPhongSphere;
         const glm::mat4 model = clip.second ? squash(clip.u, deep ? 0.95F : 0.75F, deep ? 0.2F : 0.4F) : scale(0.75F);
         scene.objects.push_back({shape_, model, id == kSmoothSphere ? matte : shiny,
@@ -309,16 +332,18 @@ Scene DiaryScene::phase2(int width, int height, std::optional<float> angle) cons
         const glm::vec3 lamp = angle ? glm::vec3(kLampCircle * std::sin(a), kLampHeight, -kLampCircle * std::cos(a))
                                      : glm::vec3(0.0F, kLampHeight, 0.0F);
         scene.point_lights = {{lamp, 1.0F, kDiaryFalloff}};
-        scene.objects.push_back({ground_, glm::mat4(1.0F), LinearMaterial::from_srgb(kBlack, kDiffuse, kBlack, std::nullopt),
+        scene.objects.push_back({ground_, glm::mat4(1.0F),
+                                 LinearMaterial::from_srgb(kBlack, kDiffuse, kBlack, std::nullopt),
                                  ShadingMethod::phong});
-        scene.objects.push_back({shape_, placed(lamp, 0.04F), LinearMaterial::from_srgb(kGold, kBlack, kBlack, std::nullopt),
-                                 ShadingMethod::phong});
+        scene.objects.push_back({shape_, placed(lamp, 0.04F),
+                                 LinearMaterial::from_srgb(kGold, kBlack, kBlack, std::nullopt), ShadingMethod::phong});
         return scene;
     }
     add_phase2_lights(scene, id);
     const glm::mat4 turn = angle ? tumble_rotation(*angle) : glm::mat4(1.0F);
     if (id == kShaders) {  // the same torus twice, the left one per pixel and the right one per vertex
-        for (const auto& [x, method] : {std::pair{-0.6F, ShadingMethod::phong}, std::pair{0.6F, ShadingMethod::gouraud}}) {
+        for (const auto& [x, method] :
+             {std::pair{-0.6F, ShadingMethod::phong}, std::pair{0.6F, ShadingMethod::gouraud}}) {
             scene.objects.push_back({shape_, glm::translate(glm::mat4(1.0F), {x, 0.0F, 0.0F}) * turn * scale(0.55F),
                                      torus_material(id), method});
         }

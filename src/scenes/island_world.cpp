@@ -63,8 +63,20 @@ Mesh flowing(const std::array<glm::vec3, 4>& corners, glm::vec3 inside, float ti
 // strait and the hangar, down the runway, and back west past the bridge; a closed Catmull-Rom
 // spline through these points.
 constexpr std::array<glm::dvec3, 14> kFlightPath{{
-    {-36, 6, -44}, {-36, 5, -20}, {-36, 5.5, 4}, {-36, 11, 17}, {-34, 20, 30}, {-20, 17, 22}, {-2, 14, 10},
-    {22, 13, 18}, {48, 9, 26}, {50, 8, 0}, {50, 8, -22}, {32, 10, -36}, {4, 8, -28}, {-22, 7, -40},
+    {-36, 6, -44},
+    {-36, 5, -20},
+    {-36, 5.5, 4},
+    {-36, 11, 17},
+    {-34, 20, 30},
+    {-20, 17, 22},
+    {-2, 14, 10},
+    {22, 13, 18},
+    {48, 9, 26},
+    {50, 8, 0},
+    {50, 8, -22},
+    {32, 10, -36},
+    {4, 8, -28},
+    {-22, 7, -40},
 }};
 
 glm::dvec3 on_path(double along) {
@@ -74,7 +86,8 @@ glm::dvec3 on_path(double along) {
     const double t = at - i;
     const auto p = [](int k) { return kFlightPath[static_cast<std::size_t>(((k % n) + n) % n)]; };
     const glm::dvec3 p0 = p(i - 1), p1 = p(i), p2 = p(i + 1), p3 = p(i + 2);
-    return 0.5 * (2.0 * p1 + (p2 - p0) * t + (2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3) * t * t + (3.0 * p1 - p0 - 3.0 * p2 + p3) * t * t * t);
+    return 0.5 * (2.0 * p1 + (p2 - p0) * t + (2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3) * t * t +
+                  (3.0 * p1 - p0 - 3.0 * p2 + p3) * t * t * t);
 }
 
 }  // namespace
@@ -103,7 +116,8 @@ IslandWorld::IslandWorld() {
     const auto metal = corrugated();
 
     // The ocean, and both islands: a slab of sand with a lawn on top, the sand left as beaches.
-    fixed.push_back(textured_object(textured_ground(800.0F, 800.0F, 4.0F), placed_at({0, -0.4F, 0}), waves(), textured_material(1.0F, 0.3F, 60.0F)));
+    fixed.push_back(textured_object(textured_ground(800.0F, 800.0F, 4.0F), placed_at({0, -0.4F, 0}), waves(),
+                                    textured_material(1.0F, 0.3F, 60.0F)));
     fixed.push_back(textured_object(textured_box({52, 1, 64}, 2.0F), placed_at({-40, -0.5F, 0}), sand));
     fixed.push_back(textured_object(textured_box({60, 1, 72}, 2.0F), placed_at({40, -0.5F, 0}), sand));
     Mesh lawns;
@@ -120,8 +134,10 @@ IslandWorld::IslandWorld() {
         glm::vec3 where;
         float width, height, yaw;
     };
-    for (const Peak& peak : {Peak{{-55, 0, 11}, 18, 20, 0.2F}, Peak{{-56, 0, -7}, 15, 15, -0.3F}, Peak{{-58, 0, -19}, 9, 8, 0.5F}}) {
-        append_posed(rocks, textured_pyramid(peak.width, peak.width, peak.height, 4.0F), placed_at(peak.where, peak.yaw));
+    for (const Peak& peak :
+         {Peak{{-55, 0, 11}, 18, 20, 0.2F}, Peak{{-56, 0, -7}, 15, 15, -0.3F}, Peak{{-58, 0, -19}, 9, 8, 0.5F}}) {
+        append_posed(rocks, textured_pyramid(peak.width, peak.width, peak.height, 4.0F),
+                     placed_at(peak.where, peak.yaw));
         // The top 30 % in snow, a hair larger than the rock it covers.
         const float cap = 0.3F * 1.02F;
         if (peak.height > 10.0F) {
@@ -138,51 +154,73 @@ IslandWorld::IslandWorld() {
     append_posed(walls, textured_box({6, 3.5F, 5}, 2.0F), house * placed_at({0, 1.75F, 0}));
     append_posed(walls, textured_box({0.8F, 2.0F, 0.8F}, 2.0F), house * placed_at({1.6F, 4.6F, -1.0F}));
     append_posed(roof, textured_pyramid(7.0F, 6.0F, 2.6F, 1.0F), house * placed_at({0, 3.5F, 0}));
-    append_posed(door, textured_quad({glm::vec3(-0.6F, 0, 2.52F), glm::vec3(0.6F, 0, 2.52F), glm::vec3(0.6F, 2.1F, 2.52F), glm::vec3(-0.6F, 2.1F, 2.52F)}, glm::vec3(0), 1.2F), house);
+    append_posed(door,
+                 textured_quad({glm::vec3(-0.6F, 0, 2.52F), glm::vec3(0.6F, 0, 2.52F), glm::vec3(0.6F, 2.1F, 2.52F),
+                                glm::vec3(-0.6F, 2.1F, 2.52F)},
+                               glm::vec3(0), 1.2F),
+                 house);
     for (const float x : {-2.0F, 2.0F}) {
-        append_posed(panes, textured_quad({glm::vec3(x - 0.6F, 1.2F, 2.52F), glm::vec3(x + 0.6F, 1.2F, 2.52F), glm::vec3(x + 0.6F, 2.4F, 2.52F), glm::vec3(x - 0.6F, 2.4F, 2.52F)}, glm::vec3(0), 1.2F), house);
+        append_posed(panes,
+                     textured_quad({glm::vec3(x - 0.6F, 1.2F, 2.52F), glm::vec3(x + 0.6F, 1.2F, 2.52F),
+                                    glm::vec3(x + 0.6F, 2.4F, 2.52F), glm::vec3(x - 0.6F, 2.4F, 2.52F)},
+                                   glm::vec3(0), 1.2F),
+                     house);
     }
     fixed.push_back(textured_object(std::move(walls), glm::mat4(1.0F), bricks()));
     fixed.push_back(textured_object(std::move(roof), glm::mat4(1.0F), tiles));
     fixed.push_back(textured_object(std::move(door), glm::mat4(1.0F), planks({90, 56, 30}, 16)));
-    fixed.push_back(textured_object(std::move(panes), glm::mat4(1.0F), windows(), textured_material(1.0F, 0.6F, 80.0F)));
+    fixed.push_back(
+        textured_object(std::move(panes), glm::mat4(1.0F), windows(), textured_material(1.0F, 0.6F, 80.0F)));
 
     // The bridge across the strait: a deck on two pairs of piers, ramps down to either shore, rails.
     Mesh deck, timbers;
     const float z = -18.0F, ramp = std::atan2(3.5F, 8.0F);
     append_posed(deck, textured_box({36, 0.4F, 4}, 2.0F), placed_at({-2, 3.3F, z}));
-    append_posed(deck, textured_box({8.8F, 0.4F, 4}, 2.0F), glm::rotate(placed_at({-24, 1.65F, z}), ramp, glm::vec3(0, 0, 1)));
-    append_posed(deck, textured_box({8.8F, 0.4F, 4}, 2.0F), glm::rotate(placed_at({20, 1.65F, z}), -ramp, glm::vec3(0, 0, 1)));
+    append_posed(deck, textured_box({8.8F, 0.4F, 4}, 2.0F),
+                 glm::rotate(placed_at({-24, 1.65F, z}), ramp, glm::vec3(0, 0, 1)));
+    append_posed(deck, textured_box({8.8F, 0.4F, 4}, 2.0F),
+                 glm::rotate(placed_at({20, 1.65F, z}), -ramp, glm::vec3(0, 0, 1)));
     for (const float x : {-9.0F, 5.0F}) {
-        for (const float side : {-1.6F, 1.6F}) append_posed(timbers, textured_box({0.8F, 4.0F, 0.8F}, 1.0F), placed_at({x, 1.1F, z + side}));
+        for (const float side : {-1.6F, 1.6F})
+            append_posed(timbers, textured_box({0.8F, 4.0F, 0.8F}, 1.0F), placed_at({x, 1.1F, z + side}));
     }
-    for (const float side : {-1.9F, 1.9F}) append_posed(timbers, textured_box({36, 0.5F, 0.15F}, 1.0F), placed_at({-2, 4.0F, z + side}));
+    for (const float side : {-1.9F, 1.9F})
+        append_posed(timbers, textured_box({36, 0.5F, 0.15F}, 1.0F), placed_at({-2, 4.0F, z + side}));
     fixed.push_back(textured_object(std::move(deck), glm::mat4(1.0F), boards));
     fixed.push_back(textured_object(std::move(timbers), glm::mat4(1.0F), bark));
 
     // The airport on the eastern island: a runway, a hangar with its door toward it.
-    fixed.push_back(textured_object(textured_quad({glm::vec3(45, 0.04F, -30), glm::vec3(55, 0.04F, -30), glm::vec3(55, 0.04F, 30), glm::vec3(45, 0.04F, 30)}, glm::vec3(50, -1, 0), 10.0F),
-                           glm::mat4(1.0F), runway()));
+    fixed.push_back(textured_object(textured_quad({glm::vec3(45, 0.04F, -30), glm::vec3(55, 0.04F, -30),
+                                                   glm::vec3(55, 0.04F, 30), glm::vec3(45, 0.04F, 30)},
+                                                  glm::vec3(50, -1, 0), 10.0F),
+                                    glm::mat4(1.0F), runway()));
     Mesh hangar;
     const glm::mat4 hangar_at = placed_at({26, 0, 18}, std::numbers::pi_v<float> / 2.0F);
     append_posed(hangar, textured_box({12, 6, 14}, 2.0F), hangar_at * placed_at({0, 3, 0}));
-    append_posed(hangar, textured_prism(8, 6.0F, 13.8F, 2.0F), hangar_at * glm::scale(placed_at({0, 6, 0}), glm::vec3(1, 0.45F, 1)));
+    append_posed(hangar, textured_prism(8, 6.0F, 13.8F, 2.0F),
+                 hangar_at * glm::scale(placed_at({0, 6, 0}), glm::vec3(1, 0.45F, 1)));
     fixed.push_back(textured_object(std::move(hangar), glm::mat4(1.0F), metal, textured_material(1.0F, 0.4F, 30.0F)));
-    fixed.push_back(textured_object(textured_quad({glm::vec3(-4, 0, 7.02F), glm::vec3(4, 0, 7.02F), glm::vec3(4, 5, 7.02F), glm::vec3(-4, 5, 7.02F)}, glm::vec3(0), 2.0F),
-                           hangar_at, speckled({58, 60, 66}, 0.1F, 10)));
+    fixed.push_back(textured_object(textured_quad({glm::vec3(-4, 0, 7.02F), glm::vec3(4, 0, 7.02F),
+                                                   glm::vec3(4, 5, 7.02F), glm::vec3(-4, 5, 7.02F)},
+                                                  glm::vec3(0), 2.0F),
+                                    hangar_at, speckled({58, 60, 66}, 0.1F, 10)));
 
     // Trees: firs below the western mountains and on the eastern island, oaks by the house and
     // the hangar, palms on the beaches.
     TreeParts trees;
-    for (const glm::vec3 fir : {glm::vec3(-47, 0, -10), glm::vec3(-49, 0, -4), glm::vec3(-46, 0, 2), glm::vec3(-51, 0, -13),
-                                glm::vec3(20, 0, -26), glm::vec3(25, 0, -22), glm::vec3(21, 0, -9), glm::vec3(31, 0, -27)}) {
+    for (const glm::vec3 fir :
+         {glm::vec3(-47, 0, -10), glm::vec3(-49, 0, -4), glm::vec3(-46, 0, 2), glm::vec3(-51, 0, -13),
+          glm::vec3(20, 0, -26), glm::vec3(25, 0, -22), glm::vec3(21, 0, -9), glm::vec3(31, 0, -27)}) {
         add_fir(trees, fir, 5.0F + 2.0F * grain(static_cast<int>(fir.x), static_cast<int>(fir.z), 20));
     }
-    for (const glm::vec3 oak : {glm::vec3(-14, 0, 14), glm::vec3(-17, 0, 1), glm::vec3(-25, 0, 15), glm::vec3(18, 0, -15), glm::vec3(29, 0, -14), glm::vec3(18, 0, 4)}) {
+    for (const glm::vec3 oak : {glm::vec3(-14, 0, 14), glm::vec3(-17, 0, 1), glm::vec3(-25, 0, 15),
+                                glm::vec3(18, 0, -15), glm::vec3(29, 0, -14), glm::vec3(18, 0, 4)}) {
         add_oak(trees, oak, 4.5F + 1.5F * grain(static_cast<int>(oak.x), static_cast<int>(oak.z), 21));
     }
-    for (const glm::vec4 palm : {glm::vec4(-52, 0, -27, 0.3F), glm::vec4(-45, 0, -29, 2.6F), glm::vec4(-27, 0, -27, -0.4F), glm::vec4(-20, 0, -25, 3.4F),
-                                 glm::vec4(64, 0, -31, 2.9F), glm::vec4(66, 0, 14, 1.8F), glm::vec4(14, 0, 30, -1.2F)}) {
+    for (const glm::vec4 palm :
+         {glm::vec4(-52, 0, -27, 0.3F), glm::vec4(-45, 0, -29, 2.6F), glm::vec4(-27, 0, -27, -0.4F),
+          glm::vec4(-20, 0, -25, 3.4F), glm::vec4(64, 0, -31, 2.9F), glm::vec4(66, 0, 14, 1.8F),
+          glm::vec4(14, 0, 30, -1.2F)}) {
         add_palm(trees, glm::vec3(palm), palm.w);
     }
     fixed.push_back(textured_object(std::move(trees.trunks), glm::mat4(1.0F), bark));
@@ -194,11 +232,13 @@ IslandWorld::IslandWorld() {
     parts->propeller = textured_object(propeller(), glm::mat4(1.0F), speckled({40, 40, 44}, 0.1F, 16));
     Mesh hull;
     append_posed(hull, textured_box({2.4F, 1.2F, 6.0F}, 1.0F), placed_at({0, 0.2F, 0}));
-    append_posed(hull, textured_pyramid(2.4F, 1.2F, 1.8F, 1.0F), glm::rotate(placed_at({0, 0.2F, 3.0F}), std::numbers::pi_v<float> / 2.0F, glm::vec3(1, 0, 0)));
+    append_posed(hull, textured_pyramid(2.4F, 1.2F, 1.8F, 1.0F),
+                 glm::rotate(placed_at({0, 0.2F, 3.0F}), std::numbers::pi_v<float> / 2.0F, glm::vec3(1, 0, 0)));
     parts->hull = textured_object(std::move(hull), glm::mat4(1.0F), planks({140, 92, 52}, 8));
     Mesh cabin;
     append_posed(cabin, textured_box({1.8F, 1.1F, 2.2F}, 1.0F), placed_at({0, 1.35F, -0.8F}));
-    append_posed(cabin, textured_box({0.12F, 1.0F, 0.12F}, 1.0F), placed_at({0, 2.4F, 0.6F}));  // clears the bridge deck at 3.1 m
+    append_posed(cabin, textured_box({0.12F, 1.0F, 0.12F}, 1.0F),
+                 placed_at({0, 2.4F, 0.6F}));  // clears the bridge deck at 3.1 m
     parts->cabin = textured_object(std::move(cabin), glm::mat4(1.0F), sail());
     parts->water = textured_object(Mesh{}, glm::mat4(1.0F), streaks(), textured_material(1.0F, 0.3F, 60.0F));
     parts_ = std::move(parts);
@@ -219,16 +259,22 @@ PerspectiveScene IslandWorld::world(PerspectiveCamera camera, double along) cons
     const double a = kTau * along;
 
     // The river down from the cliff top, over the falls and down the canyon, flowing.
-    Mesh water = flowing({glm::vec3(kRiverWest, kCliffTop + 0.03F, kCliffFace + 8.0F), glm::vec3(kRiverEast, kCliffTop + 0.03F, kCliffFace + 8.0F),
-                          glm::vec3(kRiverEast, kCliffTop + 0.03F, kCliffFace), glm::vec3(kRiverWest, kCliffTop + 0.03F, kCliffFace)},
-                         glm::vec3(-36, 0, 28), 4.0F, along, 16);
-    append_posed(water, flowing({glm::vec3(kRiverWest, kCliffTop, kCliffFace - 0.05F), glm::vec3(kRiverEast, kCliffTop, kCliffFace - 0.05F),
-                                 glm::vec3(kRiverEast, 0.05F, kCliffFace - 0.05F), glm::vec3(kRiverWest, 0.05F, kCliffFace - 0.05F)},
-                                glm::vec3(-36, 7, 30), 4.0F, along, 48),
-                 glm::mat4(1.0F));
-    append_posed(water, flowing({glm::vec3(kRiverWest, 0.05F, kCliffFace), glm::vec3(kRiverEast, 0.05F, kCliffFace),
-                                 glm::vec3(kRiverEast, 0.05F, -32.0F), glm::vec3(kRiverWest, 0.05F, -32.0F)},
-                                glm::vec3(-36, -1, 0), 4.0F, along, 24),
+    Mesh water = flowing(
+        {glm::vec3(kRiverWest, kCliffTop + 0.03F, kCliffFace + 8.0F),
+         glm::vec3(kRiverEast, kCliffTop + 0.03F, kCliffFace + 8.0F),
+         glm::vec3(kRiverEast, kCliffTop + 0.03F, kCliffFace), glm::vec3(kRiverWest, kCliffTop + 0.03F, kCliffFace)},
+        glm::vec3(-36, 0, 28), 4.0F, along, 16);
+    append_posed(
+        water,
+        flowing(
+            {glm::vec3(kRiverWest, kCliffTop, kCliffFace - 0.05F), glm::vec3(kRiverEast, kCliffTop, kCliffFace - 0.05F),
+             glm::vec3(kRiverEast, 0.05F, kCliffFace - 0.05F), glm::vec3(kRiverWest, 0.05F, kCliffFace - 0.05F)},
+            glm::vec3(-36, 7, 30), 4.0F, along, 48),
+        glm::mat4(1.0F));
+    append_posed(water,
+                 flowing({glm::vec3(kRiverWest, 0.05F, kCliffFace), glm::vec3(kRiverEast, 0.05F, kCliffFace),
+                          glm::vec3(kRiverEast, 0.05F, -32.0F), glm::vec3(kRiverWest, 0.05F, -32.0F)},
+                         glm::vec3(-36, -1, 0), 4.0F, along, 24),
                  glm::mat4(1.0F));
     SceneObject river = parts_->water;
     river.mesh = std::make_shared<const Mesh>(std::move(water));
@@ -245,16 +291,20 @@ PerspectiveScene IslandWorld::world(PerspectiveCamera camera, double along) cons
 
     // The other circles a shifted vertical axis once a loop, banked into the turn.
     const double orbit = a;
-    const glm::vec3 aloft(static_cast<float>(10.0 + 45.0 * std::sin(orbit)), 30.0F, static_cast<float>(45.0 * std::cos(orbit)));
+    const glm::vec3 aloft(static_cast<float>(10.0 + 45.0 * std::sin(orbit)), 30.0F,
+                          static_cast<float>(45.0 * std::cos(orbit)));
     const auto heading = static_cast<float>(std::atan2(std::cos(orbit), -std::sin(orbit)));
-    const glm::mat4 flying = glm::translate(glm::rotate(glm::rotate(placed_at(aloft), heading, glm::vec3(0, 1, 0)), -0.3F, glm::vec3(0, 0, 1)), glm::vec3(0, -kPropellerHub.y, 0));
+    const glm::mat4 flying = glm::translate(
+        glm::rotate(glm::rotate(placed_at(aloft), heading, glm::vec3(0, 1, 0)), -0.3F, glm::vec3(0, 0, 1)),
+        glm::vec3(0, -kPropellerHub.y, 0));
     plane.model = flying;
     blades.model = glm::rotate(flying * glm::translate(glm::mat4(1.0F), kPropellerHub), spin(30.0), glm::vec3(0, 0, 1));
     scene.objects.push_back(plane);
     scene.objects.push_back(blades);
 
     // The boat sails up the strait and back down it, a long narrow loop under the bridge.
-    const glm::vec3 boat_at(static_cast<float>(-2.0 + 2.5 * std::sin(a)), -0.2F, static_cast<float>(45.0 * std::cos(a)));
+    const glm::vec3 boat_at(static_cast<float>(-2.0 + 2.5 * std::sin(a)), -0.2F,
+                            static_cast<float>(45.0 * std::cos(a)));
     const auto bow = static_cast<float>(std::atan2(2.5 * std::cos(a), -45.0 * std::sin(a)));
     SceneObject hull = parts_->hull, cabin = parts_->cabin;
     hull.model = cabin.model = placed_at(boat_at, bow);
@@ -268,14 +318,16 @@ PerspectiveScene IslandWorld::flight(int width, int height, double along) const 
     // that it turns before the path does and sees the islands rather than the sky.
     const glm::dvec3 eye = on_path(along), ahead = on_path(along + 0.05) * glm::dvec3(1.0, 0.5, 1.0);
     const glm::dvec3 look = ahead - eye;
-    const double yaw = std::atan2(look.x, look.z), pitch = std::clamp(std::atan2(look.y, std::hypot(look.x, look.z)), -0.6, 0.05);
+    const double yaw = std::atan2(look.x, look.z),
+                 pitch = std::clamp(std::atan2(look.y, std::hypot(look.x, look.z)), -0.6, 0.05);
     return world(PerspectiveCamera::first_person(width, height, glm::vec3(eye), pitch, yaw, {70.0, 0.1, 400.0}), along);
 }
 
 PerspectiveScene IslandWorld::view(std::string_view element, int width, int height) const {
     for (const View& view : kViews) {
         if (view.element.name == element) {
-            return world(PerspectiveCamera::look_at(width, height, view.eye, view.target, {0, 1, 0}, {60.0, 0.1, 400.0}), 0.0);
+            return world(
+                PerspectiveCamera::look_at(width, height, view.eye, view.target, {0, 1, 0}, {60.0, 0.1, 400.0}), 0.0);
         }
     }
     std::string names;

@@ -7,13 +7,16 @@
 namespace raster::detail {
 
 float grain(int x, int y, std::uint32_t seed) {
-    std::uint32_t h = static_cast<std::uint32_t>(x) * 374761393U + static_cast<std::uint32_t>(y) * 668265263U + seed * 2246822519U;
+    std::uint32_t h =
+        static_cast<std::uint32_t>(x) * 374761393U + static_cast<std::uint32_t>(y) * 668265263U + seed * 2246822519U;
     h = (h ^ (h >> 13)) * 1274126177U;
     return static_cast<float>((h ^ (h >> 16)) & 0xFFFFU) / 65536.0F;
 }
 
 Rgb shaded(Rgb base, float k) {
-    const auto c = [k](std::uint8_t v) { return static_cast<std::uint8_t>(std::clamp(static_cast<float>(v) * k, 0.0F, 255.0F)); };
+    const auto c = [k](std::uint8_t v) {
+        return static_cast<std::uint8_t>(std::clamp(static_cast<float>(v) * k, 0.0F, 255.0F));
+    };
     return {c(base.r), c(base.g), c(base.b)};
 }
 
@@ -37,7 +40,8 @@ std::shared_ptr<const Texture> scales() {
 }
 
 std::shared_ptr<const Texture> speckled(Rgb base, float spread, std::uint32_t seed) {
-    return painted(64, 64, [=](int x, int y) { return shaded(base, 1.0F - spread + 2.0F * spread * grain(x, y, seed)); });
+    return painted(64, 64,
+                   [=](int x, int y) { return shaded(base, 1.0F - spread + 2.0F * spread * grain(x, y, seed)); });
 }
 
 std::shared_ptr<const Texture> bricks() {
@@ -63,7 +67,9 @@ std::shared_ptr<const Texture> waves() {
 }
 
 std::shared_ptr<const Texture> sail() {
-    return painted(64, 64, [](int x, int y) { return (y / 8) % 3 == 1 ? Rgb{200, 40, 40} : shaded({236, 232, 220}, 0.95F + 0.05F * grain(x, y, 5)); });
+    return painted(64, 64, [](int x, int y) {
+        return (y / 8) % 3 == 1 ? Rgb{200, 40, 40} : shaded({236, 232, 220}, 0.95F + 0.05F * grain(x, y, 5));
+    });
 }
 
 std::shared_ptr<const Texture> streaks() {

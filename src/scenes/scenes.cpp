@@ -1,15 +1,15 @@
 #include <raster/scenes/scenes.hpp>
 
+#include <raster/camera/ortho_camera.hpp>
 #include <raster/geometry/cube.hpp>
-#include <raster/scenes/diary_scenes.hpp>
 #include <raster/rasterize/draw_cube.hpp>
 #include <raster/rasterize/line.hpp>
-#include <raster/camera/ortho_camera.hpp>
+#include <raster/scenes/diary_scenes.hpp>
 #include <raster/scenes/palette.hpp>
 
 #include <cmath>
-#include <glm/ext/matrix_transform.hpp>
 #include <numbers>
+#include <glm/ext/matrix_transform.hpp>
 
 namespace raster {
 namespace {
@@ -26,8 +26,7 @@ glm::mat4 half_size() { return glm::scale(glm::mat4(1.0F), glm::vec3(0.5F)); }
 
 glm::mat4 still_cube_pose() {
     const glm::mat4 identity(1.0F);
-    return glm::rotate(identity, kQuarterPi, kAxisX) * glm::rotate(identity, kQuarterPi, kAxisY) *
-           half_size();
+    return glm::rotate(identity, kQuarterPi, kAxisX) * glm::rotate(identity, kQuarterPi, kAxisY) * half_size();
 }
 
 glm::mat4 tumble_rotation(float t) {
@@ -61,8 +60,7 @@ void render_spokes(Framebuffer& framebuffer) {
     }
 }
 
-void render_cube(Framebuffer& framebuffer, const glm::mat4& pose, CubeStyle style,
-                 Rgb line_colour) {
+void render_cube(Framebuffer& framebuffer, const glm::mat4& pose, CubeStyle style, Rgb line_colour) {
     if (style == CubeStyle::lit) {
         Scene scene = DiaryScene("lit-cube").still(framebuffer.width(), framebuffer.height());
         scene.objects.front().model = pose;
@@ -74,12 +72,8 @@ void render_cube(Framebuffer& framebuffer, const glm::mat4& pose, CubeStyle styl
     const OrthoCamera camera(framebuffer.width(), framebuffer.height());
     const Cube cube = Cube().posed(pose);
     switch (style) {
-    case CubeStyle::filled:
-        draw_faces(framebuffer, camera, cube, kCubeFacePalette);
-        break;
-    case CubeStyle::wireframe:
-        draw_edges(framebuffer, camera, cube, EdgeSelection::all, line_colour);
-        break;
+    case CubeStyle::filled: draw_faces(framebuffer, camera, cube, kCubeFacePalette); break;
+    case CubeStyle::wireframe: draw_edges(framebuffer, camera, cube, EdgeSelection::all, line_colour); break;
     case CubeStyle::culled_wireframe:
         draw_edges(framebuffer, camera, cube, EdgeSelection::front_facing, line_colour);
         break;

@@ -6,15 +6,19 @@
 namespace raster {
 
 // Flattened, like LinearLighting::shade_lanes: the eight-lane helpers cost more called than inlined.
-[[gnu::flatten]] void IntensityLighting::intensity_lanes(const LaneVec3& normals, LaneFloats& out, int count) const noexcept {
+[[gnu::flatten]] void IntensityLighting::intensity_lanes(const LaneVec3& normals, LaneFloats& out,
+                                                         int count) const noexcept {
     using lanes::Floats;
     namespace stdx = lanes::stdx;
     const lanes::Vec3 normal = lanes::unit_or_zero(lanes::load(normals));
     Floats lit(0.0F);
     for (const PreparedLight& light : lights) {
-        Floats received = lanes::positive_part(lanes::dot(normal, lanes::broadcast(light.toward.x, light.toward.y, light.toward.z)));
+        Floats received =
+            lanes::positive_part(lanes::dot(normal, lanes::broadcast(light.toward.x, light.toward.y, light.toward.z)));
         if (specular_.enabled()) {
-            received += lanes::powered(specular_, lanes::positive_part(lanes::dot(normal, lanes::broadcast(light.half.x, light.half.y, light.half.z))));
+            received += lanes::powered(
+                specular_,
+                lanes::positive_part(lanes::dot(normal, lanes::broadcast(light.half.x, light.half.y, light.half.z))));
         }
         lit += light.intensity * received;
     }

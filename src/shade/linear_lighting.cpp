@@ -31,14 +31,16 @@ LinearMaterial LinearMaterial::from_srgb(Rgb emissive, Rgb diffuse, Rgb specular
 LinearLighting::LinearLighting(const LinearMaterial& material, std::span<const DirectionalLight> directional,
                                std::span<const PointLight> points, glm::vec3 to_eye,
                                std::optional<glm::vec3> eye_position, std::optional<DepthDarkening> darkening)
-    : material_(material), to_eye_(unit_or_zero(to_eye)), eye_(eye_position), power_(material.shininess), darkening_(darkening) {
+    : material_(material), to_eye_(unit_or_zero(to_eye)), eye_(eye_position), power_(material.shininess),
+      darkening_(darkening) {
     for (const DirectionalLight& light : directional) {
         PreparedLight ready = prepare_light(light, to_eye_);
         ready.intensity = std::clamp(ready.intensity, -kBrightest, kBrightest);
         if (ready.intensity != 0.0F) directional_.push_back(ready);
     }
     for (const PointLight& light : points) {
-        if (usable(light) && light.intensity != 0.0F) points_.push_back({light.position, light.intensity, light.falloff});
+        if (usable(light) && light.intensity != 0.0F)
+            points_.push_back({light.position, light.intensity, light.falloff});
     }
 }
 

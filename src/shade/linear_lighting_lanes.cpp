@@ -41,15 +41,16 @@ Floats attenuated_lanes(const PreparedPointLight& light, const Floats& distance,
 }  // namespace
 
 // Flattened: GCC leaves the eight-lane helpers out of line otherwise, and the calls cost more than the arithmetic.
-[[gnu::flatten]] void LinearLighting::shade_lanes(const LaneVec3& positions, const LaneVec3& normals, const LaneRgb& diffuse_colours,
-                                 std::span<Rgb> out) const noexcept {
+[[gnu::flatten]] void LinearLighting::shade_lanes(const LaneVec3& positions, const LaneVec3& normals,
+                                                  const LaneRgb& diffuse_colours, std::span<Rgb> out) const noexcept {
     const int count = static_cast<int>(std::min<std::size_t>(out.size(), kLanes));
     const Vec3 position = lanes::load(positions), normal = lanes::unit_or_zero(lanes::load(normals));
     // The direction and distance from each point toward `light`, as toward_point() finds them.
     const auto toward = [&](glm::vec3 light, Vec3& unit, Floats& distance) {
         const Vec3 offset = lanes::broadcast(light.x, light.y, light.z) - position;
         const Floats squared = lanes::dot(offset, offset);
-        const Mask in_float = squared >= std::numeric_limits<float>::min() && squared < Floats(std::numeric_limits<float>::infinity());
+        const Mask in_float =
+            squared >= std::numeric_limits<float>::min() && squared < Floats(std::numeric_limits<float>::infinity());
         distance = stdx::sqrt(squared);
         unit = offset / distance;
         if (stdx::all_of(in_float)) return;
@@ -57,7 +58,8 @@ Floats attenuated_lanes(const PreparedPointLight& light, const Floats& distance,
             const auto k = static_cast<std::size_t>(i);
             if (in_float[k]) continue;
             const Toward precise = toward_point_precisely(light, {positions.x[k], positions.y[k], positions.z[k]});
-            unit.x[k] = precise.unit.x, unit.y[k] = precise.unit.y, unit.z[k] = precise.unit.z, distance[k] = precise.distance;
+            unit.x[k] = precise.unit.x, unit.y[k] = precise.unit.y, unit.z[k] = precise.unit.z,
+            distance[k] = precise.distance;
         }
     };
     Vec3 to_eye = lanes::broadcast(to_eye_.x, to_eye_.y, to_eye_.z);
@@ -70,7 +72,8 @@ Floats attenuated_lanes(const PreparedPointLight& light, const Floats& distance,
         const Vec3 toward_light = lanes::broadcast(light.toward.x, light.toward.y, light.toward.z);
         diffuse += light.intensity * lanes::positive_part(lanes::dot(normal, toward_light));
         if (power_.enabled()) {
-            const Vec3 half = eye_ ? lanes::unit_or_zero(toward_light + to_eye) : lanes::broadcast(light.half.x, light.half.y, light.half.z);
+            const Vec3 half = eye_ ? lanes::unit_or_zero(toward_light + to_eye)
+                                   : lanes::broadcast(light.half.x, light.half.y, light.half.z);
             specular += light.intensity * lanes::powered(power_, lanes::positive_part(lanes::dot(normal, half)));
         }
     }
@@ -83,12 +86,15 @@ Floats attenuated_lanes(const PreparedPointLight& light, const Floats& distance,
         const Floats arriving = attenuated_lanes(light, distance, kBrightest);
         stdx::where(lit, diffuse) += arriving * lanes::positive_part(lanes::dot(normal, unit));
         if (power_.enabled()) {
-            stdx::where(lit, specular) += arriving * lanes::powered(power_, lanes::positive_part(lanes::dot(normal, lanes::unit_or_zero(unit + to_eye))));
+            stdx::where(lit, specular) +=
+                arriving *
+                lanes::powered(power_, lanes::positive_part(lanes::dot(normal, lanes::unit_or_zero(unit + to_eye))));
         }
     }
     if (darkening_ && eye_) {
         const Vec3 away = lanes::broadcast(-to_eye_.x, -to_eye_.y, -to_eye_.z);
-        const Floats dimmed = darkened(*darkening_, lanes::dot(position - lanes::broadcast(eye_->x, eye_->y, eye_->z), away));
+        const Floats dimmed =
+            darkened(*darkening_, lanes::dot(position - lanes::broadcast(eye_->x, eye_->y, eye_->z), away));
         diffuse *= dimmed;
         specular *= dimmed;
     }

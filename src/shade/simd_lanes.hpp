@@ -3,9 +3,9 @@
 #include <raster/image/lanes.hpp>
 #include <raster/shade/intensity_lighting.hpp>
 
-#include <experimental/simd>
 #include <limits>
 #include <optional>
+#include <experimental/simd>
 
 // The SIMD side of lanes (raster/image/lanes.hpp), GCC's <experimental/simd> at the baseline of
 // the build (SSE2 on any x86-64): every function does per lane what its scalar namesake does.

@@ -3,8 +3,8 @@
 #include "shade/texture_wrap.hpp"
 
 #include <algorithm>
-#include <stdexcept>
 #include <cmath>
+#include <stdexcept>
 #include <utility>
 #include <glm/geometric.hpp>
 
@@ -50,23 +50,28 @@ Texture::Texture() noexcept {
 
 Texture::Texture(Framebuffer image) : Texture() {
     levels_.push_back(std::move(image));
-    while (levels_.back().width() > 1 || levels_.back().height() > 1) levels_.push_back(halved(levels_.back(), linear_from_byte_));
+    while (levels_.back().width() > 1 || levels_.back().height() > 1)
+        levels_.push_back(halved(levels_.back(), linear_from_byte_));
 }
 
 Texture Texture::from_levels(std::vector<Framebuffer> levels) {
     for (std::size_t i = 1; i < levels.size(); ++i) {
-        if (levels[i].width() != std::max(1, levels[i - 1].width() / 2) || levels[i].height() != std::max(1, levels[i - 1].height() / 2)) {
+        if (levels[i].width() != std::max(1, levels[i - 1].width() / 2) ||
+            levels[i].height() != std::max(1, levels[i - 1].height() / 2)) {
             throw std::invalid_argument("a mip level is not half the one before it");
         }
     }
-    if (levels.empty() || levels.back().width() != 1 || levels.back().height() != 1) throw std::invalid_argument("a mip chain must end at 1 x 1");
+    if (levels.empty() || levels.back().width() != 1 || levels.back().height() != 1)
+        throw std::invalid_argument("a mip chain must end at 1 x 1");
     Texture texture;
     texture.levels_ = std::move(levels);
     return texture;
 }
 
 LinearRgb Texture::texel(const Framebuffer& level, int x, int y) const noexcept {
-    const std::uint8_t* p = level.bytes().data() + (static_cast<std::size_t>(y) * static_cast<std::size_t>(level.width()) + static_cast<std::size_t>(x)) * 3;
+    const std::uint8_t* p =
+        level.bytes().data() +
+        (static_cast<std::size_t>(y) * static_cast<std::size_t>(level.width()) + static_cast<std::size_t>(x)) * 3;
     return {linear_from_byte_[p[0]], linear_from_byte_[p[1]], linear_from_byte_[p[2]]};
 }
 
@@ -107,7 +112,8 @@ LinearRgb Texture::sample(glm::vec2 uv, const UvFootprint& footprint, Sampler sa
     if (lod >= last) return bilinear(levels_.back(), uv, sampler.wrap);
     const float lower = std::floor(lod), blend = lod - lower;
     const auto index = static_cast<std::size_t>(lower);
-    return bilinear(levels_[index], uv, sampler.wrap) * (1.0F - blend) + bilinear(levels_[index + 1], uv, sampler.wrap) * blend;
+    return bilinear(levels_[index], uv, sampler.wrap) * (1.0F - blend) +
+           bilinear(levels_[index + 1], uv, sampler.wrap) * blend;
 }
 
 }  // namespace raster

@@ -32,8 +32,8 @@ Floats wrapped_lanes(const Floats& c, TextureWrap wrap) noexcept {
 
 }  // namespace
 
-void Texture::bilinear_lanes(const std::array<std::size_t, kLanes>& levels, const LaneFloats& u, const LaneFloats& v, TextureWrap wrap,
-                             LaneRgb& out, int count) const noexcept {
+void Texture::bilinear_lanes(const std::array<std::size_t, kLanes>& levels, const LaneFloats& u, const LaneFloats& v,
+                             TextureWrap wrap, LaneRgb& out, int count) const noexcept {
     LaneFloats widths{}, heights{};
     for (std::size_t i = 0; i < kLanes; ++i) {
         widths[i] = static_cast<float>(levels_[levels[i]].width());
@@ -64,7 +64,8 @@ void Texture::bilinear_lanes(const std::array<std::size_t, kLanes>& levels, cons
     blend(&LaneRgb::r, out.r), blend(&LaneRgb::g, out.g), blend(&LaneRgb::b, out.b);
 }
 
-[[gnu::flatten]] void Texture::sample_lanes(const LaneUvs& at, Sampler sampler, LaneRgb& out, int count) const noexcept {
+[[gnu::flatten]] void Texture::sample_lanes(const LaneUvs& at, Sampler sampler, LaneRgb& out,
+                                            int count) const noexcept {
     if (sampler.filter == TextureFilter::nearest) {
         for (int i = 0; i < count; ++i) {
             const auto k = static_cast<std::size_t>(i);

@@ -1,17 +1,17 @@
 // The exporters as a user meets them: help, version, quiet and progress, stdout, safe files.
 #include <raster/io/png.hpp>
+#include <raster/io/webp.hpp>
 #include <raster/scenes/scenes.hpp>
 #include <raster/version.hpp>
-#include <raster/io/webp.hpp>
 
 #include "support/scratch.hpp"
 
 #include <chrono>
 #include <csignal>
-#include <gtest/gtest.h>
 #include <sstream>
-#include <sys/stat.h>
 #include <thread>
+#include <gtest/gtest.h>
+#include <sys/stat.h>
 
 using raster::Framebuffer;
 using test_support::kAnimatedCube;
@@ -23,8 +23,8 @@ using test_support::ScratchDir;
 
 namespace {
 
-const std::vector<std::string> kApps{kStillCube, kAnimatedCube, kStillUnitCube, kWebpFrame,
-                                     test_support::kStillScene, test_support::kAnimatedScene};
+const std::vector<std::string> kApps{
+    kStillCube, kAnimatedCube, kStillUnitCube, kWebpFrame, test_support::kStillScene, test_support::kAnimatedScene};
 
 std::string name_of(const std::string& program) { return std::filesystem::path(program).filename().string(); }
 
@@ -113,8 +113,8 @@ TEST(Cli, APngNameWritesPngAndAnOddNameWarns) {
 
 TEST(Cli, ProgressCountsFramesThenAssemblyWhenAsked) {
     const ScratchDir dir;
-    const auto result = run(kAnimatedCube, {"--progress", "--frames", "20", "--width", "40", "--height", "30", "p.webp"},
-                            dir.path());
+    const auto result =
+        run(kAnimatedCube, {"--progress", "--frames", "20", "--width", "40", "--height", "30", "p.webp"}, dir.path());
     EXPECT_EQ(result.exit_code, 0);
     EXPECT_NE(result.err.find("animated-cube: frame 2/20\n"), std::string::npos) << result.err;
     EXPECT_NE(result.err.find("animated-cube: frame 20/20\n"), std::string::npos) << result.err;
@@ -124,8 +124,8 @@ TEST(Cli, ProgressCountsFramesThenAssemblyWhenAsked) {
 
 TEST(Cli, ATerminalSeesProgressInPlaceAndNoImageBytes) {
     const ScratchDir dir;
-    const auto shown = test_support::run_on_terminal(kAnimatedCube, {"--frames", "5", "--width", "40", "--height", "30", "t.webp"},
-                                                     dir.path());
+    const auto shown = test_support::run_on_terminal(
+        kAnimatedCube, {"--frames", "5", "--width", "40", "--height", "30", "t.webp"}, dir.path());
     EXPECT_EQ(shown.exit_code, 0) << shown.out;
     EXPECT_NE(shown.out.find("\r\033[Kanimated-cube: frame 5/5"), std::string::npos) << shown.out;
     EXPECT_NE(shown.out.find("Wrote t.webp: 40x30, 5 frames, 100 ms"), std::string::npos) << shown.out;

@@ -1,11 +1,11 @@
-#include <raster/scenes/scenes.hpp>
 #include <raster/io/webp.hpp>
+#include <raster/scenes/scenes.hpp>
 
 #include "support/scratch.hpp"
 
 #include <algorithm>
-#include <sys/stat.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 using raster::CubeStyle;
 using raster::Framebuffer;
@@ -18,10 +18,7 @@ using test_support::ScratchDir;
 
 namespace {
 
-
-int line_count(const std::string& text) {
-    return static_cast<int>(std::count(text.begin(), text.end(), '\n'));
-}
+int line_count(const std::string& text) { return static_cast<int>(std::count(text.begin(), text.end(), '\n')); }
 
 // A successful run prints exactly "Wrote <file>: <details>, <size> bytes" and nothing else.
 void expect_reported(const test_support::RunResult& result, const std::string& file,
@@ -57,7 +54,8 @@ TEST(StillCubeApp, EachStyleAndSizeDecodesToTheInMemoryRender) {
     for (const auto& [name, style] : {std::pair{"wireframe", CubeStyle::wireframe},
                                       {"culled-wireframe", CubeStyle::culled_wireframe},
                                       {"filled", CubeStyle::filled}}) {
-        const auto result = run(kStillCube, {"--style", name, "--width", "321", "--height", "123", "out.webp"}, dir.path());
+        const auto result =
+            run(kStillCube, {"--style", name, "--width", "321", "--height", "123", "out.webp"}, dir.path());
         expect_reported(result, "out.webp", dir / "out.webp");
         EXPECT_EQ(raster::read_webp(dir / "out.webp").frames.at(0).image, still_cube(321, 123, style)) << name;
     }
@@ -107,8 +105,9 @@ TEST(AnimatedCubeApp, Writes360LosslessFramesTwentyMillisecondsApart) {
 
 TEST(AnimatedCubeApp, HonoursFramesFpsStyleSizeAndEffort) {
     const ScratchDir dir;
-    const auto result = run(kAnimatedCube, {"--frames", "12", "--fps", "25", "--style", "culled-wireframe",
-                                            "--width", "160", "--height", "90", "--effort", "fast", "spin.webp"},
+    const auto result = run(kAnimatedCube,
+                            {"--frames", "12", "--fps", "25", "--style", "culled-wireframe", "--width", "160",
+                             "--height", "90", "--effort", "fast", "spin.webp"},
                             dir.path());
     expect_reported(result, "spin.webp", dir / "spin.webp");
     const raster::DecodedWebp decoded = raster::read_webp(dir / "spin.webp");
@@ -123,7 +122,8 @@ TEST(AnimatedCubeApp, HonoursFramesFpsStyleSizeAndEffort) {
 
 TEST(ExporterApps, HelpTeachesTheOptionsAndSucceeds) {
     const ScratchDir dir;
-    for (const std::string& app : {kStillCube, kAnimatedCube, kStillUnitCube, test_support::kStillScene, test_support::kAnimatedScene}) {
+    for (const std::string& app :
+         {kStillCube, kAnimatedCube, kStillUnitCube, test_support::kStillScene, test_support::kAnimatedScene}) {
         const auto result = run(app, {"--help"}, dir.path());
         EXPECT_EQ(result.exit_code, 0);
         for (const char* option : {"--width", "--height", "--effort", "output", "Example"}) {
@@ -165,39 +165,95 @@ TEST_P(ExporterRejects, WithOneLineANonZeroExitAndTheExistingFileUntouched) {
     EXPECT_EQ(line_count(result.err), 1) << result.err;
     EXPECT_NE(result.err.find(bad.message), std::string::npos) << result.err;
     EXPECT_EQ(test_support::read_text(dir / "existing.webp"), "precious");
-    EXPECT_EQ(dir.entries(), (std::vector<std::string>{"a-fifo", "a-file", "a-link.webp", "existing.webp", "two-frames.webp"}));
+    EXPECT_EQ(dir.entries(),
+              (std::vector<std::string>{"a-fifo", "a-file", "a-link.webp", "existing.webp", "two-frames.webp"}));
 }
 
 INSTANTIATE_TEST_SUITE_P(
     BadInput, ExporterRejects,
     ::testing::Values(
-        BadInput{"UnknownOption", kStillCube, {"--colour", "red", "existing.webp"}, "were not expected: existing.webp --colour"},
-        BadInput{"ZeroWidth", kStillCube, {"--width", "0", "existing.webp"}, "--width: 0 is out of range (expected 1..16383)"},
+        BadInput{"UnknownOption",
+                 kStillCube,
+                 {"--colour", "red", "existing.webp"},
+                 "were not expected: existing.webp --colour"},
+        BadInput{"ZeroWidth",
+                 kStillCube,
+                 {"--width", "0", "existing.webp"},
+                 "--width: 0 is out of range (expected 1..16383)"},
         BadInput{"NegativeHeight", kStillCube, {"--height", "-3", "existing.webp"}, "--height: -3 is out of range"},
-        BadInput{"AbsurdWidth", kStillUnitCube, {"--width", "100000", "existing.webp"}, "--width: 100000 is out of range"},
-        BadInput{"HeightBeyondInt", kAnimatedCube, {"--height", "999999999999", "existing.webp"}, "--height: 999999999999 is out of range"},
-        BadInput{"WidthNotANumber", kStillCube, {"--width", "abc", "existing.webp"}, "--width: 'abc' is not an integer"},
-        BadInput{"HexadecimalFrames", kAnimatedCube, {"--frames", "0x10", "existing.webp"}, "--frames: '0x10' is not an integer"},
+        BadInput{
+            "AbsurdWidth", kStillUnitCube, {"--width", "100000", "existing.webp"}, "--width: 100000 is out of range"},
+        BadInput{"HeightBeyondInt",
+                 kAnimatedCube,
+                 {"--height", "999999999999", "existing.webp"},
+                 "--height: 999999999999 is out of range"},
+        BadInput{
+            "WidthNotANumber", kStillCube, {"--width", "abc", "existing.webp"}, "--width: 'abc' is not an integer"},
+        BadInput{"HexadecimalFrames",
+                 kAnimatedCube,
+                 {"--frames", "0x10", "existing.webp"},
+                 "--frames: '0x10' is not an integer"},
         BadInput{"FractionalFps", kAnimatedCube, {"--fps", "2.5", "existing.webp"}, "--fps: '2.5' is not an integer"},
         BadInput{"ZeroFrames", kAnimatedCube, {"--frames", "0", "existing.webp"}, "--frames: 0 is out of range"},
-        BadInput{"FpsBrowsersWouldSlowDown", kAnimatedCube, {"--fps", "96", "existing.webp"}, "--fps: 96 is out of range (expected 1..95)"},
-        BadInput{"UnknownEffort", kAnimatedCube, {"--effort", "turbo", "existing.webp"}, "--effort: 'turbo' is not one of fast, default, max"},
-        BadInput{"EffortByNumber", kAnimatedCube, {"--effort", "0", "existing.webp"}, "--effort: '0' is not one of fast, default, max"},
-        BadInput{"UnknownStyle", kStillCube, {"--style", "wire", "existing.webp"}, "--style: 'wire' is not one of filled, wireframe, culled-wireframe"},
-        BadInput{"StyleByNumber", kAnimatedCube, {"--style", "2", "existing.webp"}, "--style: '2' is not one of filled"},
-        BadInput{"UnknownScene", test_support::kStillScene, {"--scene", "teapot", "existing.webp"}, "--scene: 'teapot' is not one of lit-cube, dodecahedron, orbit"},
-        BadInput{"SceneFramesBeyondTheLimit", test_support::kAnimatedScene, {"--frames", "10001", "existing.webp"}, "--frames: 10001 is out of range (expected 0..10000)"},
-        BadInput{"SceneSizeNotANumber", test_support::kAnimatedScene, {"--width", "8k", "existing.webp"}, "--width: '8k' is not an integer"},
-        BadInput{"StraightAngleOfView", test_support::kStillScene, {"--perspective", "180", "existing.webp"}, "--perspective: 180 is out of range (expected 0..179)"},
-        BadInput{"NegativeAngleOfView", test_support::kAnimatedScene, {"--perspective", "-5", "existing.webp"}, "--perspective: -5 is out of range (expected 0..179)"},
+        BadInput{"FpsBrowsersWouldSlowDown",
+                 kAnimatedCube,
+                 {"--fps", "96", "existing.webp"},
+                 "--fps: 96 is out of range (expected 1..95)"},
+        BadInput{"UnknownEffort",
+                 kAnimatedCube,
+                 {"--effort", "turbo", "existing.webp"},
+                 "--effort: 'turbo' is not one of fast, default, max"},
+        BadInput{"EffortByNumber",
+                 kAnimatedCube,
+                 {"--effort", "0", "existing.webp"},
+                 "--effort: '0' is not one of fast, default, max"},
+        BadInput{"UnknownStyle",
+                 kStillCube,
+                 {"--style", "wire", "existing.webp"},
+                 "--style: 'wire' is not one of filled, wireframe, culled-wireframe"},
+        BadInput{
+            "StyleByNumber", kAnimatedCube, {"--style", "2", "existing.webp"}, "--style: '2' is not one of filled"},
+        BadInput{"UnknownScene",
+                 test_support::kStillScene,
+                 {"--scene", "teapot", "existing.webp"},
+                 "--scene: 'teapot' is not one of lit-cube, dodecahedron, orbit"},
+        BadInput{"SceneFramesBeyondTheLimit",
+                 test_support::kAnimatedScene,
+                 {"--frames", "10001", "existing.webp"},
+                 "--frames: 10001 is out of range (expected 0..10000)"},
+        BadInput{"SceneSizeNotANumber",
+                 test_support::kAnimatedScene,
+                 {"--width", "8k", "existing.webp"},
+                 "--width: '8k' is not an integer"},
+        BadInput{"StraightAngleOfView",
+                 test_support::kStillScene,
+                 {"--perspective", "180", "existing.webp"},
+                 "--perspective: 180 is out of range (expected 0..179)"},
+        BadInput{"NegativeAngleOfView",
+                 test_support::kAnimatedScene,
+                 {"--perspective", "-5", "existing.webp"},
+                 "--perspective: -5 is out of range (expected 0..179)"},
         BadInput{"SceneOutputIsADirectory", test_support::kStillScene, {"."}, "cannot write '.'", false},
         BadInput{"OutputTwice", kStillCube, {"-o", "a.webp", "existing.webp"}, "excludes"},
         BadInput{"MissingDirectory", kStillCube, {"missing/out.webp"}, "directory 'missing' does not exist", false},
         BadInput{"ParentIsAFile", kAnimatedCube, {"a-file/out.webp"}, "'a-file' is not a directory", false},
         BadInput{"OutputIsADirectory", kStillUnitCube, {"."}, "cannot write '.'", false},
-        BadInput{"UnwritablePlace", kAnimatedCube, {"/proc/raster-cannot-write-here.webp"}, "cannot write '/proc/", false},
+        BadInput{
+            "UnwritablePlace", kAnimatedCube, {"/proc/raster-cannot-write-here.webp"}, "cannot write '/proc/", false},
         BadInput{"OutputIsAFifo", kAnimatedCube, {"a-fifo"}, "cannot write 'a-fifo': it is a FIFO", false},
-        BadInput{"OutputIsASymbolicLink", kStillCube, {"a-link.webp"}, "cannot write 'a-link.webp': it is a symbolic link", false},
-        BadInput{"FrameBeyondTheAnimation", kWebpFrame, {"two-frames.webp", "2", "existing.webp"}, "has 2 frame(s), numbered 0..1", false},
-        BadInput{"FrameOfAFileThatIsNotWebp", kWebpFrame, {"a-file", "0", "existing.webp"}, "'a-file' is empty, not a WebP file", false}),
+        BadInput{"OutputIsASymbolicLink",
+                 kStillCube,
+                 {"a-link.webp"},
+                 "cannot write 'a-link.webp': it is a symbolic link",
+                 false},
+        BadInput{"FrameBeyondTheAnimation",
+                 kWebpFrame,
+                 {"two-frames.webp", "2", "existing.webp"},
+                 "has 2 frame(s), numbered 0..1",
+                 false},
+        BadInput{"FrameOfAFileThatIsNotWebp",
+                 kWebpFrame,
+                 {"a-file", "0", "existing.webp"},
+                 "'a-file' is empty, not a WebP file",
+                 false}),
     [](const ::testing::TestParamInfo<BadInput>& param) { return param.param.case_name; });

@@ -60,7 +60,8 @@ TEST(FrameRange, PartsRenderTheWholeRunsFramesAndAssembleToItExactly) {
         const raster::DecodedWebp whole = raster::read_webp(dir / "whole.webp");
         const raster::DecodedWebp b = raster::read_webp(dir / "b.webp");
         ASSERT_EQ(b.frames.size(), 7U);
-        for (std::size_t i = 0; i < 7; ++i) EXPECT_EQ(b.frames[i].image, whole.frames[4 + i].image) << encoder << " frame " << 4 + i;
+        for (std::size_t i = 0; i < 7; ++i)
+            EXPECT_EQ(b.frames[i].image, whole.frames[4 + i].image) << encoder << " frame " << 4 + i;
         EXPECT_EQ(raster::frame_range_of(bytes_of(dir / "b.webp")), (raster::FrameRange{4, 10, 12, 20}));
         EXPECT_EQ(raster::frame_range_of(bytes_of(dir / "whole.webp")), std::nullopt);
 
@@ -68,7 +69,8 @@ TEST(FrameRange, PartsRenderTheWholeRunsFramesAndAssembleToItExactly) {
         ASSERT_EQ(joined.exit_code, 0) << joined.err;
         EXPECT_EQ(joined.out.rfind("Wrote joined.webp: 12 frames from 3 parts, ", 0), 0U) << joined.out;
         expect_same_frames(raster::read_webp(dir / "joined.webp"), whole);
-        for (const char* name : {"whole.webp", "a.webp", "b.webp", "c.webp", "joined.webp"}) std::filesystem::remove(dir / name);
+        for (const char* name : {"whole.webp", "a.webp", "b.webp", "c.webp", "joined.webp"})
+            std::filesystem::remove(dir / name);
     }
 }
 
@@ -79,10 +81,12 @@ TEST(FrameRange, NumberedFramesOfARangeAreTheWholeRunsFiles) {
     const auto part = run(kAnimatedCube, with(turn, {"--frames-dir", "some", "--frame-range", "3..5"}), dir.path());
     ASSERT_EQ(part.exit_code, 0) << part.err;
     std::vector<std::string> names;
-    for (const auto& entry : std::filesystem::directory_iterator(dir / "some")) names.push_back(entry.path().filename().string());
+    for (const auto& entry : std::filesystem::directory_iterator(dir / "some"))
+        names.push_back(entry.path().filename().string());
     std::sort(names.begin(), names.end());
     EXPECT_EQ(names, (std::vector<std::string>{"0003.png", "0004.png", "0005.png"}));
-    for (const std::string& name : names) EXPECT_EQ(bytes_of(dir / "some" / name), bytes_of(dir / "all" / name)) << name;
+    for (const std::string& name : names)
+        EXPECT_EQ(bytes_of(dir / "some" / name), bytes_of(dir / "all" / name)) << name;
 }
 
 TEST(FrameRange, ATurntableRendersItsRangeToo) {
@@ -92,7 +96,8 @@ TEST(FrameRange, ATurntableRendersItsRangeToo) {
     ASSERT_EQ(run(kRender, with(spin, {"whole.webp"}), dir.path()).exit_code, 0);
     const auto part = run(kRender, with(spin, {"part.webp", "--frame-range", "2..3"}), dir.path());
     ASSERT_EQ(part.exit_code, 0) << part.err;
-    const raster::DecodedWebp whole = raster::read_webp(dir / "whole.webp"), some = raster::read_webp(dir / "part.webp");
+    const raster::DecodedWebp whole = raster::read_webp(dir / "whole.webp"),
+                              some = raster::read_webp(dir / "part.webp");
     ASSERT_EQ(some.frames.size(), 2U);
     EXPECT_EQ(some.frames[0].image, whole.frames[2].image);
     EXPECT_EQ(some.frames[1].image, whole.frames[3].image);
@@ -100,7 +105,8 @@ TEST(FrameRange, ATurntableRendersItsRangeToo) {
 
 TEST(FrameRange, ARangeOutsideTheClipOrMalformedIsOneLine) {
     const ScratchDir dir;
-    const auto past = run(kAnimatedCube, with(kSmall, {"--frames", "10", "--frame-range", "5..10", "x.webp"}), dir.path());
+    const auto past =
+        run(kAnimatedCube, with(kSmall, {"--frames", "10", "--frame-range", "5..10", "x.webp"}), dir.path());
     EXPECT_EQ(past.exit_code, 1);
     EXPECT_EQ(past.err, "animated-cube: --frame-range 5..10 goes past the clip's last frame, 9\n");
     for (const std::string bad : {"3..1", "-1..4", "4", "a..b", "1...2", "1..", "99999999999..1"}) {
@@ -114,11 +120,19 @@ TEST(FrameRange, ARangeOutsideTheClipOrMalformedIsOneLine) {
 TEST(WebpAssemble, RefusesPartsThatDoNotTileTheClipInOneLine) {
     const ScratchDir dir;
     const auto cube = with(kSmall, {"--frames", "10"});
-    for (const auto& [name, range] : std::vector<std::pair<std::string, std::string>>{{"a.webp", "0..3"}, {"b.webp", "4..9"}, {"c.webp", "3..6"}, {"d.webp", "6..9"}}) {
+    for (const auto& [name, range] : std::vector<std::pair<std::string, std::string>>{
+             {"a.webp", "0..3"}, {"b.webp", "4..9"}, {"c.webp", "3..6"}, {"d.webp", "6..9"}}) {
         ASSERT_EQ(run(kAnimatedCube, with(cube, {"--frame-range", range, name}), dir.path()).exit_code, 0);
     }
-    ASSERT_EQ(run(kAnimatedCube, with({"--width", "32", "--height", "48", "--frames", "10", "--quiet", "--frame-range", "4..9"}, {"small.webp"}), dir.path()).exit_code, 0);
-    ASSERT_EQ(run(kAnimatedCube, with(kSmall, {"--frames", "20", "--frame-range", "4..9", "other.webp"}), dir.path()).exit_code, 0);
+    ASSERT_EQ(run(kAnimatedCube,
+                  with({"--width", "32", "--height", "48", "--frames", "10", "--quiet", "--frame-range", "4..9"},
+                       {"small.webp"}),
+                  dir.path())
+                  .exit_code,
+              0);
+    ASSERT_EQ(run(kAnimatedCube, with(kSmall, {"--frames", "20", "--frame-range", "4..9", "other.webp"}), dir.path())
+                  .exit_code,
+              0);
     ASSERT_EQ(run(kAnimatedCube, with(kSmall, {"--frames", "10", "whole.webp"}), dir.path()).exit_code, 0);
     const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
         {{"a.webp"}, "webp-assemble: frames 4..9 are in no part\n"},
@@ -128,7 +142,8 @@ TEST(WebpAssemble, RefusesPartsThatDoNotTileTheClipInOneLine) {
         {{"a.webp", "d.webp"}, "webp-assemble: frames 4..5 are in no part\n"},
         {{"a.webp", "small.webp"}, "webp-assemble: 'small.webp' is 32x48, the others 64x48\n"},
         {{"a.webp", "other.webp"}, "webp-assemble: 'other.webp' is part of a clip of 20 frames, 'a.webp' of 10\n"},
-        {{"whole.webp"}, "webp-assemble: 'whole.webp' is not a part: it has no frame range (render it with --frame-range)\n"},
+        {{"whole.webp"},
+         "webp-assemble: 'whole.webp' is not a part: it has no frame range (render it with --frame-range)\n"},
         {{"a.webp", "missing.webp"}, "webp-assemble: 'missing.webp' does not exist\n"},
     };
     for (const auto& [parts, message] : cases) {
@@ -148,22 +163,33 @@ TEST(SkipExisting, ACompleteOutputIsKeptAndAnythingElseIsRendered) {
     const auto part = with(kSmall, {"--frames", "10", "--frame-range", "2..5", "--skip-existing"});
     ASSERT_EQ(run(kAnimatedCube, with(part, {"p.webp"}), dir.path()).exit_code, 0);
     const auto written = std::filesystem::last_write_time(dir / "p.webp");
-    const auto again = run(kAnimatedCube, with({"--frames", "10", "--frame-range", "2..5", "--skip-existing", "p.webp", "--width", "64", "--height", "48"}, {}), dir.path());
+    const auto again = run(kAnimatedCube,
+                           with({"--frames", "10", "--frame-range", "2..5", "--skip-existing", "p.webp", "--width",
+                                 "64", "--height", "48"},
+                                {}),
+                           dir.path());
     ASSERT_EQ(again.exit_code, 0) << again.err;
     EXPECT_EQ(again.out, "Skipped p.webp: it already holds frames 2..5 of 10\n");
     EXPECT_EQ(std::filesystem::last_write_time(dir / "p.webp"), written);
     // Another range, another size, or a damaged file under the same name is rendered again.
-    const auto other = run(kAnimatedCube, with(kSmall, {"--frames", "10", "--frame-range", "2..6", "--skip-existing", "p.webp"}), dir.path());
+    const auto other =
+        run(kAnimatedCube, with(kSmall, {"--frames", "10", "--frame-range", "2..6", "--skip-existing", "p.webp"}),
+            dir.path());
     ASSERT_EQ(other.exit_code, 0) << other.err;
     EXPECT_EQ(raster::frame_range_of(bytes_of(dir / "p.webp")), (raster::FrameRange{2, 6, 10, 20}));
     std::filesystem::resize_file(dir / "p.webp", 100);
-    ASSERT_EQ(run(kAnimatedCube, with(kSmall, {"--frames", "10", "--frame-range", "2..6", "--skip-existing", "p.webp"}), dir.path()).exit_code, 0);
+    ASSERT_EQ(run(kAnimatedCube, with(kSmall, {"--frames", "10", "--frame-range", "2..6", "--skip-existing", "p.webp"}),
+                  dir.path())
+                  .exit_code,
+              0);
     EXPECT_EQ(raster::read_webp(dir / "p.webp").frames.size(), 5U);
     // Numbered frames: only the missing ones are drawn.
     ASSERT_EQ(run(kAnimatedCube, with(kSmall, {"--frames", "6", "--frames-dir", "f"}), dir.path()).exit_code, 0);
     std::filesystem::remove(dir / "f" / "0002.png");
     const auto before = std::filesystem::last_write_time(dir / "f" / "0003.png");
-    const auto refill = run(kAnimatedCube, {"--frames", "6", "--frames-dir", "f", "--skip-existing", "--width", "64", "--height", "48"}, dir.path());
+    const auto refill =
+        run(kAnimatedCube, {"--frames", "6", "--frames-dir", "f", "--skip-existing", "--width", "64", "--height", "48"},
+            dir.path());
     ASSERT_EQ(refill.exit_code, 0) << refill.err;
     EXPECT_NE(refill.out.find(": 1 PNG frames of 64x48"), std::string::npos) << refill.out;
     EXPECT_NE(refill.out.find("5 already there kept"), std::string::npos) << refill.out;
@@ -175,7 +201,8 @@ TEST(SkipExisting, ABatchDrawsOnlyTheModelsWhosePicturesAreMissing) {
     const ScratchDir dir;
     const std::string crate = test_support::write_crate_on_floor(dir.path()).string();
     std::filesystem::copy_file(crate, dir / "second.obj");
-    const std::vector<std::string> batch{"--width", "32", "--height", "24", "--output-dir", "t", crate, (dir / "second.obj").string()};
+    const std::vector<std::string> batch{"--width",      "32", "--height", "24",
+                                         "--output-dir", "t",  crate,      (dir / "second.obj").string()};
     ASSERT_EQ(run(kRender, batch, dir.path()).exit_code, 0);
     std::filesystem::remove(dir / "t" / "second.webp");
     const auto kept = std::filesystem::last_write_time(dir / "t" / std::filesystem::path(crate).stem().concat(".webp"));
@@ -191,16 +218,19 @@ TEST(FrameRange, ATransparentTurntableWhoseFramesLibwebpMergesStillAssembles) {
     // A cube turned a quarter at a time looks the same every frame: libwebp's anim encoder,
     // which transparency takes, stores one frame lasting the whole part.
     const ScratchDir dir;
-    std::ofstream(dir / "cube.obj") << "v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\n"
-                                       "f 1 4 3 2\nf 5 6 7 8\nf 1 5 8 4\nf 2 3 7 6\nf 4 8 7 3\nf 1 2 6 5\n";
+    std::ofstream(dir / "cube.obj")
+        << "v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\n"
+           "f 1 4 3 2\nf 5 6 7 8\nf 1 5 8 4\nf 2 3 7 6\nf 4 8 7 3\nf 1 2 6 5\n";
     const auto spin = with(kSaid, {"--turntable", "4", "--background", "none", "cube.obj"});
     ASSERT_EQ(run(kRender, with(spin, {"whole.webp"}), dir.path()).exit_code, 0);
     ASSERT_EQ(run(kRender, with(spin, {"--frame-range", "0..1", "p0.webp"}), dir.path()).exit_code, 0);
-    EXPECT_EQ(raster::webp_frame_count(bytes_of(dir / "p0.webp")), 1) << "the case this test is about: two frames merged into one";
+    EXPECT_EQ(raster::webp_frame_count(bytes_of(dir / "p0.webp")), 1)
+        << "the case this test is about: two frames merged into one";
     ASSERT_EQ(run(kRender, with(spin, {"--frame-range", "2..3", "p1.webp"}), dir.path()).exit_code, 0);
     const auto joined = run(kWebpAssemble, {"joined.webp", "p0.webp", "p1.webp"}, dir.path());
     ASSERT_EQ(joined.exit_code, 0) << joined.err;
-    const raster::DecodedWebp whole = raster::read_webp(dir / "whole.webp"), both = raster::read_webp(dir / "joined.webp");
+    const raster::DecodedWebp whole = raster::read_webp(dir / "whole.webp"),
+                              both = raster::read_webp(dir / "joined.webp");
     ASSERT_FALSE(whole.frames.empty());
     // The whole run merged all four into a still; the join shows the same picture for 4 x 33 ms.
     EXPECT_EQ(both.frames.back().start_ms + both.frames.back().duration_ms, 132);

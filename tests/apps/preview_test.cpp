@@ -11,12 +11,12 @@
 #include <chrono>
 #include <csignal>
 #include <functional>
+#include <gtest/gtest.h>
 #include <poll.h>
 #include <pty.h>
 #include <sys/wait.h>
 #include <termios.h>
 #include <unistd.h>
-#include <gtest/gtest.h>
 
 using test_support::run;
 using test_support::ScratchDir;
@@ -25,7 +25,7 @@ namespace {
 
 struct TerminalRun {
     int exit_code = -1;
-    std::string shown;      // all the program wrote to the terminal, stdout and stderr
+    std::string shown;            // all the program wrote to the terminal, stdout and stderr
     bool echo_and_lines = false;  // the terminal's ECHO and ICANON were on again when it ended
     double seconds = 0.0;
 };
@@ -34,8 +34,8 @@ using Answer = std::function<std::string(const std::string& shown)>;
 
 // Runs a program on a new pseudo-terminal of the given window size, playing the terminal: once
 // the program asks for the device attributes (ESC [ c), `answer` to what it showed is typed back.
-TerminalRun run_on_kitty(const std::string& program, const std::vector<std::string>& arguments, const std::filesystem::path& directory,
-                         const Answer& answer, winsize window) {
+TerminalRun run_on_kitty(const std::string& program, const std::vector<std::string>& arguments,
+                         const std::filesystem::path& directory, const Answer& answer, winsize window) {
     const auto start = std::chrono::steady_clock::now();
     int terminal = -1;
     const pid_t child = ::forkpty(&terminal, nullptr, nullptr, &window);
@@ -71,7 +71,8 @@ TerminalRun run_on_kitty(const std::string& program, const std::vector<std::stri
         }
     }
     termios settings{};
-    if (::tcgetattr(terminal, &settings) == 0) result.echo_and_lines = (settings.c_lflag & ECHO) != 0 && (settings.c_lflag & ICANON) != 0;
+    if (::tcgetattr(terminal, &settings) == 0)
+        result.echo_and_lines = (settings.c_lflag & ECHO) != 0 && (settings.c_lflag & ICANON) != 0;
     ::close(terminal);
     int status = 0;
     ::waitpid(child, &status, 0);
@@ -102,7 +103,10 @@ raster::Framebuffer still_cube(int width, int height) {
 TEST(Preview, WithStdoutOnAPipeEveryExporterSaysWhyInOneLineAndWritesTheSameFile) {
     const ScratchDir dir;
     test_support::write_crate_on_floor(dir.path());
-    ASSERT_EQ(run(test_support::kAnimatedCube, {"--frames", "3", "--width", "32", "--height", "24", "spin.webp"}, dir.path()).exit_code, 0);
+    ASSERT_EQ(
+        run(test_support::kAnimatedCube, {"--frames", "3", "--width", "32", "--height", "24", "spin.webp"}, dir.path())
+            .exit_code,
+        0);
     const std::vector<std::string> small{"--width", "48", "--height", "36"};
     const std::vector<std::pair<std::string, std::vector<std::string>>> programs{
         {test_support::kStillCube, small},
@@ -122,12 +126,14 @@ TEST(Preview, WithStdoutOnAPipeEveryExporterSaysWhyInOneLineAndWritesTheSameFile
         after.push_back("after.webp");
         after.push_back("--preview");
         ASSERT_EQ(run(program, plain, dir.path()).exit_code, 0) << name;
-        for (const auto& [file, line] : {std::pair{std::string("before.webp"), before}, {std::string("after.webp"), after}}) {
+        for (const auto& [file, line] :
+             {std::pair{std::string("before.webp"), before}, {std::string("after.webp"), after}}) {
             const auto result = run(program, line, dir.path());
             EXPECT_EQ(result.exit_code, 0) << name << ": " << result.err;
             EXPECT_EQ(result.err, name + ": no preview: standard output is not a terminal\n");
             EXPECT_EQ(result.out.rfind("Wrote " + file + ": ", 0), 0U) << result.out;
-            EXPECT_EQ(test_support::read_bytes(dir / file), test_support::read_bytes(dir / "plain.webp")) << name << " " << file;
+            EXPECT_EQ(test_support::read_bytes(dir / file), test_support::read_bytes(dir / "plain.webp"))
+                << name << " " << file;
         }
     }
     EXPECT_EQ(raster::read_webp(dir / "before.webp").frames.size(), 1U);
@@ -135,7 +141,8 @@ TEST(Preview, WithStdoutOnAPipeEveryExporterSaysWhyInOneLineAndWritesTheSameFile
 
 TEST(Preview, QuietKeepsTheLineBackAndTheStillIsTheRenderedOne) {
     const ScratchDir dir;
-    const auto result = run(test_support::kStillCube, {"--preview", "-q", "--width", "40", "--height", "30", "q.webp"}, dir.path());
+    const auto result =
+        run(test_support::kStillCube, {"--preview", "-q", "--width", "40", "--height", "30", "q.webp"}, dir.path());
     EXPECT_EQ(result.exit_code, 0);
     EXPECT_EQ(result.out + result.err, "");
     EXPECT_EQ(raster::read_webp(dir / "q.webp").frames.at(0).image, still_cube(40, 30));
@@ -146,7 +153,9 @@ TEST(Preview, StandardOutputAsTheFileOrABatchIsAUsageError) {
     const auto dash = run(test_support::kStillCube, {"--preview", "-"}, dir.path());
     EXPECT_EQ(dash.exit_code, 2);
     EXPECT_EQ(dash.out, "");
-    EXPECT_EQ(dash.err, "still-cube: --preview shows the picture on standard output, which - takes for the file; name a file to write (see --help)\n");
+    EXPECT_EQ(
+        dash.err,
+        "still-cube: --preview shows the picture on standard output, which - takes for the file; name a file to write (see --help)\n");
     test_support::write_crate_on_floor(dir.path());
     const auto batch = run(test_support::kRender, {"crate.obj", "--output-dir", "thumbs", "--preview"}, dir.path());
     EXPECT_EQ(batch.exit_code, 2);
@@ -159,13 +168,15 @@ TEST(Preview, HelpNamesTheTerminalsThatShowIt) {
     const auto help = run(test_support::kAnimatedScene, {"--help"}, dir.path());
     std::string flat = help.out;
     for (char& c : flat) c = c == '\n' ? ' ' : c;
-    for (const char* word : {"--preview", "Kitty", "WezTerm", "Ghostty", "Konsole", "first frame"}) EXPECT_NE(flat.find(word), std::string::npos) << word;
+    for (const char* word : {"--preview", "Kitty", "WezTerm", "Ghostty", "Konsole", "first frame"})
+        EXPECT_NE(flat.find(word), std::string::npos) << word;
 }
 
 TEST(Preview, AKittyTerminalIsAskedThenShownThePictureScaledToItsWindow) {
     const ScratchDir dir;
-    const auto result = run_on_kitty(test_support::kStillCube, {"--width", "160", "--height", "120", "k.webp", "--preview"}, dir.path(),
-                                     kitty, kWindow);
+    const auto result =
+        run_on_kitty(test_support::kStillCube, {"--width", "160", "--height", "120", "k.webp", "--preview"}, dir.path(),
+                     kitty, kWindow);
     EXPECT_EQ(result.exit_code, 0) << result.shown;
     EXPECT_TRUE(result.echo_and_lines);
     EXPECT_EQ(result.shown.find("no preview"), std::string::npos) << result.shown.substr(0, 300);
@@ -184,7 +195,8 @@ TEST(Preview, AKittyTerminalIsAskedThenShownThePictureScaledToItsWindow) {
     EXPECT_EQ(raster::decode_png(test_support::from_base64(payload), 1 << 20).image, still_cube(160, 120));
     EXPECT_EQ(raster::read_webp(dir / "k.webp").frames.at(0).image, still_cube(160, 120));
     EXPECT_NE(result.shown.find("Wrote k.webp: 160x120 still"), std::string::npos);
-    EXPECT_LT(result.shown.find("\x1b_Ga=T"), result.shown.find("Wrote k.webp")) << "the picture comes before the report";
+    EXPECT_LT(result.shown.find("\x1b_Ga=T"), result.shown.find("Wrote k.webp"))
+        << "the picture comes before the report";
 }
 
 TEST(Preview, AnAnimationShowsItsFirstFrame) {
@@ -205,8 +217,10 @@ TEST(Preview, ASilentTerminalOrOneWithoutGraphicsGetsOneLineWithinTheTimeout) {
     const std::vector<std::string> arguments{"--preview", "--width", "40", "--height", "30", "s.webp"};
     const auto silent = run_on_kitty(test_support::kStillCube, arguments, dir.path(), says_nothing, kWindow);
     EXPECT_EQ(silent.exit_code, 0);
-    EXPECT_NE(silent.shown.find("still-cube: no preview: the terminal did not answer the Kitty graphics query within 1000 ms\r\n"),
-              std::string::npos) << silent.shown;
+    EXPECT_NE(silent.shown.find(
+                  "still-cube: no preview: the terminal did not answer the Kitty graphics query within 1000 ms\r\n"),
+              std::string::npos)
+        << silent.shown;
     EXPECT_EQ(silent.shown.find("\x1b_Ga=T"), std::string::npos);
     EXPECT_LT(silent.seconds, 10.0);
     EXPECT_TRUE(silent.echo_and_lines) << "the terminal's settings come back after a query left unanswered";
@@ -214,7 +228,8 @@ TEST(Preview, ASilentTerminalOrOneWithoutGraphicsGetsOneLineWithinTheTimeout) {
 
     const auto plain = run_on_kitty(test_support::kStillCube, arguments, dir.path(), no_graphics, kWindow);
     EXPECT_EQ(plain.exit_code, 0);
-    EXPECT_NE(plain.shown.find("still-cube: no preview: the terminal does not show Kitty graphics"), std::string::npos) << plain.shown;
+    EXPECT_NE(plain.shown.find("still-cube: no preview: the terminal does not show Kitty graphics"), std::string::npos)
+        << plain.shown;
     EXPECT_EQ(plain.shown.find("\x1b_Ga=T"), std::string::npos);
     EXPECT_LT(plain.seconds, silent.seconds) << "an answer ends the wait";
 }
@@ -222,8 +237,9 @@ TEST(Preview, ASilentTerminalOrOneWithoutGraphicsGetsOneLineWithinTheTimeout) {
 TEST(Preview, CtrlCDuringAnAnimationsQueryEndsItWithTheTerminalRestored) {
     // The encoder's and renderer's threads already run then; the signal may land on any of them.
     const ScratchDir dir;
-    const auto interrupted = run_on_kitty(test_support::kAnimatedCube, {"--preview", "--frames", "3", "--width", "64", "--height", "48", "a.webp"},
-                                          dir.path(), [](const std::string&) { return std::string("\x03"); }, kWindow);
+    const auto interrupted = run_on_kitty(
+        test_support::kAnimatedCube, {"--preview", "--frames", "3", "--width", "64", "--height", "48", "a.webp"},
+        dir.path(), [](const std::string&) { return std::string("\x03"); }, kWindow);
     EXPECT_EQ(interrupted.exit_code, -1) << "ended by the signal, as Ctrl-C should: " << interrupted.shown;
     EXPECT_TRUE(interrupted.echo_and_lines) << "the terminal's settings come back before the signal ends the program";
     EXPECT_FALSE(std::filesystem::exists(dir / "a.webp"));

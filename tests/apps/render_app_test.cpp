@@ -1,8 +1,8 @@
 // `render` as a user runs it: stills, turntables, options and bad models.
-#include <raster/render/samples.hpp>
-#include <raster/render/model_scene.hpp>
 #include <raster/io/obj_file.hpp>
 #include <raster/io/webp.hpp>
+#include <raster/render/model_scene.hpp>
+#include <raster/render/samples.hpp>
 
 #include "support/model_files.hpp"
 #include "support/scratch.hpp"
@@ -18,10 +18,12 @@ using test_support::ScratchDir;
 
 namespace {
 
-Framebuffer rendered(const std::filesystem::path& obj, const raster::ModelView& view, int width, int height, double turn = 0.0) {
+Framebuffer rendered(const std::filesystem::path& obj, const raster::ModelView& view, int width, int height,
+                     double turn = 0.0) {
     Framebuffer image(width, height);
     raster::DepthBuffer depth;
-    raster::ModelStage(std::make_shared<const raster::Model>(raster::read_obj(obj)), view, width, height).render(image, depth, turn, {.samples = raster::kSmoothSamples});
+    raster::ModelStage(std::make_shared<const raster::Model>(raster::read_obj(obj)), view, width, height)
+        .render(image, depth, turn, {.samples = raster::kSmoothSamples});
     return image;
 }
 
@@ -42,12 +44,16 @@ TEST(RenderApp, AStillNamedAfterTheModelWithOneReportLine) {
 TEST(RenderApp, ATurntableTurnsOnceAboutUp) {
     const ScratchDir dir;
     const auto obj = test_support::write_crate_on_floor(dir.path());
-    const auto result = run(kRender, {"crate.obj", "--turntable", "8", "--width", "64", "--height", "48", "--effort", "fast", "spin.webp"}, dir.path());
+    const auto result = run(
+        kRender, {"crate.obj", "--turntable", "8", "--width", "64", "--height", "48", "--effort", "fast", "spin.webp"},
+        dir.path());
     ASSERT_EQ(result.exit_code, 0) << result.err;
     const raster::DecodedWebp clip = raster::read_webp(dir / "spin.webp");
     ASSERT_EQ(clip.frames.size(), 8U);
     for (const int i : {0, 3}) {
-        EXPECT_EQ(clip.frames[static_cast<std::size_t>(i)].image, rendered(obj, {}, 64, 48, 2.0 * std::numbers::pi * i / 8)) << i;
+        EXPECT_EQ(clip.frames[static_cast<std::size_t>(i)].image,
+                  rendered(obj, {}, 64, 48, 2.0 * std::numbers::pi * i / 8))
+            << i;
     }
     EXPECT_NE(clip.frames[0].image, clip.frames[1].image);
 }
@@ -55,10 +61,11 @@ TEST(RenderApp, ATurntableTurnsOnceAboutUp) {
 TEST(RenderApp, ViewOptionsAreTheLibrarysModelView) {
     const ScratchDir dir;
     const auto obj = test_support::write_crate_on_floor(dir.path());
-    const auto result = run(kRender, {"crate.obj", "--eye", "3,4,5", "--target", "0,-1,0", "--up", "0,1,0", "--fov", "50", "--near", "1",
-                                      "--far", "20", "--shading", "flat", "--light", "1,1,0", "--background", "#102030",
-                                      "--width", "80", "--height", "60", "v.webp"},
-                            dir.path());
+    const auto result =
+        run(kRender, {"crate.obj", "--eye",        "3,4,5",   "--target", "0,-1,0", "--up",      "0,1,0", "--fov",
+                      "50",        "--near",       "1",       "--far",    "20",     "--shading", "flat",  "--light",
+                      "1,1,0",     "--background", "#102030", "--width",  "80",     "--height",  "60",    "v.webp"},
+            dir.path());
     ASSERT_EQ(result.exit_code, 0) << result.err;
     raster::ModelView view;
     view.eye = glm::dvec3(3, 4, 5);
@@ -76,8 +83,9 @@ TEST(RenderApp, UnlitOrthographicShowsTheTexturesOwnColours) {
     const ScratchDir dir;
     test_support::write_png(dir / "plain.png", test_support::checkerboard(1, 4, {200, 30, 90}, {200, 30, 90}));
     test_support::write_text(dir / "box.obj", test_support::textured_cube_obj("", ""));
-    const auto result = run(kRender, {"box.obj", "--texture", "plain.png", "--shading", "unlit", "--ortho", "--eye", "0,0,5",
-                                      "--width", "41", "--height", "41", "box.webp"},
+    const auto result = run(kRender,
+                            {"box.obj", "--texture", "plain.png", "--shading", "unlit", "--ortho", "--eye", "0,0,5",
+                             "--width", "41", "--height", "41", "box.webp"},
                             dir.path());
     ASSERT_EQ(result.exit_code, 0) << result.err;
     const Framebuffer image = raster::read_webp(dir / "box.webp").frames.at(0).image;
@@ -94,7 +102,8 @@ TEST(RenderApp, BadModelsAndOptionsFailWithOneLine) {
     const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
         {{"bad.obj"}, "render: bad.obj:3: face names vertex 7, but 2 are defined before it\n"},
         {{"ok.obj", "--near", "5", "--far", "1"}, "render: --near must be less than --far, got 5 and 1\n"},
-        {{"ok.obj", "--ortho", "--near", "1"}, "render: --near and --far set a perspective lens; an orthographic view draws the whole model\n"},
+        {{"ok.obj", "--ortho", "--near", "1"},
+         "render: --near and --far set a perspective lens; an orthographic view draws the whole model\n"},
         {{"empty.obj"}, "render: empty.obj: no faces to draw\n"},
         {{"folder.obj"}, "render: folder.obj: is a directory, not a file\n"},
         {{"ok.obj", "--texture", "nowhere.png"}, "render: nowhere.png: does not exist\n"},
@@ -105,8 +114,11 @@ TEST(RenderApp, BadModelsAndOptionsFailWithOneLine) {
         EXPECT_EQ(result.exit_code, 1) << arguments[0];
         EXPECT_EQ(result.err, message);
     }
-    for (const std::vector<std::string>& usage : {std::vector<std::string>{}, {"ok.obj", "--eye", "1,2"}, {"ok.obj", "--background", "blue"},
-                                                  {"ok.obj", "--shading", "toon"}, {"ok.obj", "--fov", "180"}}) {
+    for (const std::vector<std::string>& usage : {std::vector<std::string>{},
+                                                  {"ok.obj", "--eye", "1,2"},
+                                                  {"ok.obj", "--background", "blue"},
+                                                  {"ok.obj", "--shading", "toon"},
+                                                  {"ok.obj", "--fov", "180"}}) {
         const auto result = run(kRender, usage, dir.path());
         EXPECT_EQ(result.exit_code, 2) << ::testing::PrintToString(usage);
         EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
@@ -130,7 +142,8 @@ TEST(RenderApp, EveryPointOptionWorksBeforeBetweenAndAfterThePositionalsInEither
         for (int position = 0; position < 3; ++position) {
             for (const bool joined : {false, true}) {
                 const std::string output = "case" + std::to_string(case_number++) + ".webp";
-                const std::vector<std::string> option = joined ? std::vector<std::string>{name + "=" + value} : std::vector<std::string>{name, value};
+                const std::vector<std::string> option =
+                    joined ? std::vector<std::string>{name + "=" + value} : std::vector<std::string>{name, value};
                 std::vector<std::string> arguments = size;
                 // The one under test before the model, between model and output, or after the output.
                 const std::vector<std::string> positionals{"crate.obj", output};
@@ -143,7 +156,8 @@ TEST(RenderApp, EveryPointOptionWorksBeforeBetweenAndAfterThePositionalsInEither
                 }
                 const auto result = run(kRender, arguments, dir.path());
                 ASSERT_EQ(result.exit_code, 0) << ::testing::PrintToString(arguments) << result.err;
-                EXPECT_EQ(raster::read_webp(dir / output).frames.at(0).image, expected) << ::testing::PrintToString(arguments);
+                EXPECT_EQ(raster::read_webp(dir / output).frames.at(0).image, expected)
+                    << ::testing::PrintToString(arguments);
             }
         }
     }

@@ -1,9 +1,9 @@
 // `render`'s outputs: WebP or PNG, opaque or transparent, one animation or numbered frames.
-#include <raster/render/samples.hpp>
-#include <raster/render/model_scene.hpp>
 #include <raster/io/obj_file.hpp>
 #include <raster/io/png.hpp>
 #include <raster/io/webp.hpp>
+#include <raster/render/model_scene.hpp>
+#include <raster/render/samples.hpp>
 
 #include "support/model_files.hpp"
 #include "support/scratch.hpp"
@@ -20,13 +20,17 @@ using test_support::ScratchDir;
 
 namespace {
 
-raster::DecodedPng read_png(const std::filesystem::path& path) { return raster::decode_png(test_support::read_bytes(path), 1 << 20); }
+raster::DecodedPng read_png(const std::filesystem::path& path) {
+    return raster::decode_png(test_support::read_bytes(path), 1 << 20);
+}
 
 // What `render` draws of the OBJ, by default at its default samples.
-Framebuffer rendered(const std::filesystem::path& obj, int width, int height, double turn = 0.0, int samples = raster::kSmoothSamples) {
+Framebuffer rendered(const std::filesystem::path& obj, int width, int height, double turn = 0.0,
+                     int samples = raster::kSmoothSamples) {
     Framebuffer image(width, height);
     raster::DepthBuffer depth;
-    raster::ModelStage(std::make_shared<const raster::Model>(raster::read_obj(obj)), {}, width, height).render(image, depth, turn, {.samples = samples});
+    raster::ModelStage(std::make_shared<const raster::Model>(raster::read_obj(obj)), {}, width, height)
+        .render(image, depth, turn, {.samples = samples});
     return image;
 }
 
@@ -55,7 +59,9 @@ TEST(RenderOutputs, BackgroundNoneIsTransparentInWebpAndPng) {
     const auto obj = test_support::write_crate_on_floor(dir.path());
     for (const std::string name : {"clear.webp", "clear.png"}) {
         // One sample: a pixel is surface or background, alpha 255 or 0 (SamplesSmoothEdges... has the rest).
-        const auto result = run(kRender, {"--background", "none", "crate.obj", name, "--width", "60", "--height", "40", "--samples", "1"}, dir.path());
+        const auto result = run(
+            kRender, {"--background", "none", "crate.obj", name, "--width", "60", "--height", "40", "--samples", "1"},
+            dir.path());
         ASSERT_EQ(result.exit_code, 0) << result.err;
         EXPECT_NE(result.out.find("60x40 still on a transparent background"), std::string::npos) << result.out;
     }
@@ -84,16 +90,22 @@ TEST(RenderOutputs, BackgroundNoneIsTransparentInWebpAndPng) {
 TEST(RenderOutputs, FramesDirWritesTheTurntableAsNumberedPngFiles) {
     const ScratchDir dir;
     const auto obj = test_support::write_crate_on_floor(dir.path());
-    const auto result = run(kRender, {"crate.obj", "--frames-dir", "out/frames", "--turntable", "3", "--width", "32", "--height", "24"}, dir.path());
+    const auto result =
+        run(kRender, {"crate.obj", "--frames-dir", "out/frames", "--turntable", "3", "--width", "32", "--height", "24"},
+            dir.path());
     ASSERT_EQ(result.exit_code, 0) << result.err;
-    EXPECT_EQ(result.out.rfind("Wrote out/frames/0000.png to 0002.png: 3 PNG frames of 32x24 for 30 fps, ", 0), 0U) << result.out;
+    EXPECT_EQ(result.out.rfind("Wrote out/frames/0000.png to 0002.png: 3 PNG frames of 32x24 for 30 fps, ", 0), 0U)
+        << result.out;
     const std::vector<std::string> names{"0000.png", "0001.png", "0002.png"};
     std::vector<std::string> listed;
-    for (const auto& entry : std::filesystem::directory_iterator(dir / "out/frames")) listed.push_back(entry.path().filename().string());
+    for (const auto& entry : std::filesystem::directory_iterator(dir / "out/frames"))
+        listed.push_back(entry.path().filename().string());
     std::sort(listed.begin(), listed.end());
     EXPECT_EQ(listed, names);
     for (int i = 0; i < 3; ++i) {
-        EXPECT_EQ(read_png(dir / "out/frames" / names[static_cast<std::size_t>(i)]).image, rendered(obj, 32, 24, 2.0 * std::numbers::pi * i / 3)) << i;
+        EXPECT_EQ(read_png(dir / "out/frames" / names[static_cast<std::size_t>(i)]).image,
+                  rendered(obj, 32, 24, 2.0 * std::numbers::pi * i / 3))
+            << i;
     }
     EXPECT_FALSE(std::filesystem::exists(dir / "crate.webp"));
 }
@@ -101,7 +113,9 @@ TEST(RenderOutputs, FramesDirWritesTheTurntableAsNumberedPngFiles) {
 TEST(RenderOutputs, ATransparentTurntableKeepsAlphaInEveryFrame) {
     const ScratchDir dir;
     test_support::write_crate_on_floor(dir.path());
-    const auto result = run(kRender, {"crate.obj", "--turntable", "3", "--background=none", "--width", "32", "--height", "24", "spin.webp"}, dir.path());
+    const auto result = run(
+        kRender, {"crate.obj", "--turntable", "3", "--background=none", "--width", "32", "--height", "24", "spin.webp"},
+        dir.path());
     ASSERT_EQ(result.exit_code, 0) << result.err;
     const raster::DecodedWebp clip = raster::read_webp(dir / "spin.webp");
     ASSERT_EQ(clip.frames.size(), 3U);
@@ -116,8 +130,10 @@ TEST(RenderOutputs, OutputsThatCannotBeAreOneLine) {
     test_support::write_crate_on_floor(dir.path());
     auto result = run(kRender, {"crate.obj", "--turntable", "2", "spin.png"}, dir.path());
     EXPECT_EQ(result.exit_code, 2);
-    EXPECT_EQ(result.err, "render: a PNG file holds one picture: write the turntable to .webp, or to numbered PNG frames with --frames-dir "
-                          "DIR (see --help)\n");
+    EXPECT_EQ(
+        result.err,
+        "render: a PNG file holds one picture: write the turntable to .webp, or to numbered PNG frames with --frames-dir "
+        "DIR (see --help)\n");
     result = run(kRender, {"crate.obj", "--turntable", "2", "--output-dir", "t", "--format", "png"}, dir.path());
     EXPECT_EQ(result.exit_code, 2) << result.err;
     EXPECT_FALSE(std::filesystem::exists(dir / "t"));
@@ -145,7 +161,8 @@ TEST(RenderOutputs, OutputsThatCannotBeAreOneLine) {
 TEST(RenderOutputs, SamplesSmoothEdgesByDefaultInAnyOptionOrderAndOnlyStandardCountsAreTaken) {
     const ScratchDir dir;
     const auto obj = test_support::write_crate_on_floor(dir.path());
-    auto result = run(kRender, {"--samples", "4", "crate.obj", "--width", "60", "--height", "40", "before.png"}, dir.path());
+    auto result =
+        run(kRender, {"--samples", "4", "crate.obj", "--width", "60", "--height", "40", "before.png"}, dir.path());
     ASSERT_EQ(result.exit_code, 0) << result.err;
     result = run(kRender, {"crate.obj", "after.png", "--width=60", "--height=40", "--samples=4"}, dir.path());
     ASSERT_EQ(result.exit_code, 0) << result.err;
@@ -157,11 +174,15 @@ TEST(RenderOutputs, SamplesSmoothEdgesByDefaultInAnyOptionOrderAndOnlyStandardCo
     // The library's picture at four samples, which differs from one sample's only along edges.
     Framebuffer expected(60, 40);
     raster::Renderer renderer({.threads = 1, .samples = 4});
-    raster::ModelStage(std::make_shared<const raster::Model>(raster::read_obj(obj)), {}, 60, 40).render(expected, renderer);
+    raster::ModelStage(std::make_shared<const raster::Model>(raster::read_obj(obj)), {}, 60, 40)
+        .render(expected, renderer);
     EXPECT_EQ(smooth, expected);
     EXPECT_NE(smooth, rendered(obj, 60, 40, 0.0, 1));
     // A transparent background takes the share of samples covered as alpha.
-    result = run(kRender, {"crate.obj", "--background", "none", "--samples", "16", "--width", "60", "--height", "40", "clear.png"}, dir.path());
+    result =
+        run(kRender,
+            {"crate.obj", "--background", "none", "--samples", "16", "--width", "60", "--height", "40", "clear.png"},
+            dir.path());
     ASSERT_EQ(result.exit_code, 0) << result.err;
     const raster::DecodedPng clear = read_png(dir / "clear.png");
     EXPECT_TRUE(std::any_of(clear.alpha.begin(), clear.alpha.end(), [](std::uint8_t a) { return a > 0 && a < 255; }));

@@ -1,10 +1,10 @@
 // still-scene and animated-scene as a user runs them.
+#include <raster/io/webp.hpp>
+#include <raster/render/render_style.hpp>
 #include <raster/render/samples.hpp>
 #include <raster/scenes/diary_scenes.hpp>
 #include <raster/scenes/scenes.hpp>
 #include <raster/scenes/seed_scenes.hpp>
-#include <raster/io/webp.hpp>
-#include <raster/render/render_style.hpp>
 
 #include "support/scratch.hpp"
 
@@ -40,7 +40,9 @@ TEST(StillSceneApp, EverySceneAtAnySizeDecodesToTheInMemoryRender) {
     const ScratchDir dir;
     for (const raster::SceneInfo& info : raster::diary_scenes()) {
         const std::string name(info.name);
-        const auto result = run(kStillScene, {"--scene", name, "--width", "120", "--height", "90", "--effort", "fast", "s.webp"}, dir.path());
+        const auto result =
+            run(kStillScene, {"--scene", name, "--width", "120", "--height", "90", "--effort", "fast", "s.webp"},
+                dir.path());
         ASSERT_EQ(result.exit_code, 0) << name << ": " << result.err;
         EXPECT_EQ(raster::read_webp(dir / "s.webp").frames.at(0).image, still_of(info.name, 120, 90)) << name;
     }
@@ -48,11 +50,14 @@ TEST(StillSceneApp, EverySceneAtAnySizeDecodesToTheInMemoryRender) {
 
 TEST(StillSceneApp, PerspectiveLooksThroughAPinholeKeepingTheFraming) {
     const ScratchDir dir;
-    const auto result = run(kStillScene, {"--scene", "point-light", "--perspective", "50", "--width", "96", "--height", "72", "p.webp"}, dir.path());
+    const auto result =
+        run(kStillScene, {"--scene", "point-light", "--perspective", "50", "--width", "96", "--height", "72", "p.webp"},
+            dir.path());
     ASSERT_EQ(result.exit_code, 0) << result.err;
     Framebuffer expected(96, 72);
     raster::DepthBuffer depth;
-    raster::render(expected, raster::in_perspective(raster::DiaryScene("point-light").still(96, 72), 96, 72, 50.0), depth);
+    raster::render(expected, raster::in_perspective(raster::DiaryScene("point-light").still(96, 72), 96, 72, 50.0),
+                   depth);
     const Framebuffer written = raster::read_webp(dir / "p.webp").frames.at(0).image;
     EXPECT_EQ(written, expected);
     EXPECT_NE(written, still_of("point-light", 96, 72));
@@ -60,7 +65,8 @@ TEST(StillSceneApp, PerspectiveLooksThroughAPinholeKeepingTheFraming) {
 
 TEST(StillSceneApp, SamplesDrawTheSceneAtEachSamplePositionDiaryAndSeedAlike) {
     const ScratchDir dir;
-    auto result = run(kStillScene, {"--scene", "torus", "--samples", "4", "--width", "96", "--height", "72", "t.webp"}, dir.path());
+    auto result = run(kStillScene, {"--scene", "torus", "--samples", "4", "--width", "96", "--height", "72", "t.webp"},
+                      dir.path());
     ASSERT_EQ(result.exit_code, 0) << result.err;
     Framebuffer expected(96, 72);
     raster::DepthBuffer depth;
@@ -68,16 +74,20 @@ TEST(StillSceneApp, SamplesDrawTheSceneAtEachSamplePositionDiaryAndSeedAlike) {
     const Framebuffer written = raster::read_webp(dir / "t.webp").frames.at(0).image;
     EXPECT_EQ(written, expected);
     EXPECT_NE(written, still_of("torus", 96, 72));
-    result = run(kAnimatedScene, {"--scene=ptah", "--frames", "2", "--samples=2", "--width", "64", "--height", "48", "p.webp"}, dir.path());
+    result =
+        run(kAnimatedScene,
+            {"--scene=ptah", "--frames", "2", "--samples=2", "--width", "64", "--height", "48", "p.webp"}, dir.path());
     ASSERT_EQ(result.exit_code, 0) << result.err;
     EXPECT_EQ(raster::read_webp(dir / "p.webp").frames.size(), 2U);
 }
 
 TEST(AnimatedSceneApp, WritesTheScenesOwnFrameCountTwentyMillisecondsApart) {
     const ScratchDir dir;
-    const auto result = run(kAnimatedScene, {"--scene", "orbit", "--width", "64", "--height", "48", "--effort", "fast"}, dir.path());
+    const auto result =
+        run(kAnimatedScene, {"--scene", "orbit", "--width", "64", "--height", "48", "--effort", "fast"}, dir.path());
     ASSERT_EQ(result.exit_code, 0) << result.err;
-    EXPECT_NE(result.out.find("Wrote animated-scene.webp: 64x48, 720 frames, 14400 ms"), std::string::npos) << result.out;
+    EXPECT_NE(result.out.find("Wrote animated-scene.webp: 64x48, 720 frames, 14400 ms"), std::string::npos)
+        << result.out;
     const raster::DecodedWebp decoded = raster::read_webp(dir / "animated-scene.webp");
     const raster::DiaryScene orbit("orbit");
     Framebuffer expected(64, 48);
@@ -94,7 +104,8 @@ TEST(AnimatedSceneApp, WritesTheScenesOwnFrameCountTwentyMillisecondsApart) {
 
 TEST(AnimatedSceneApp, HonoursFramesAndFps) {
     const ScratchDir dir;
-    const auto result = run(kAnimatedScene, {"--frames", "6", "--fps", "10", "--width", "80", "--height", "60", "t.webp"}, dir.path());
+    const auto result =
+        run(kAnimatedScene, {"--frames", "6", "--fps", "10", "--width", "80", "--height", "60", "t.webp"}, dir.path());
     ASSERT_EQ(result.exit_code, 0) << result.err;
     const raster::DecodedWebp decoded = raster::read_webp(dir / "t.webp");
     ASSERT_EQ(decoded.frames.size(), 6U);
@@ -120,13 +131,16 @@ TEST(SceneApps, HelpListsEverySceneWithTheReleaseItReCreates) {
             EXPECT_NE(result.out.substr(at, 60).find(info.release), std::string::npos) << info.name;
         }
         EXPECT_NE(result.out.find("--scene NAME [point-lights]"), std::string::npos) << result.out;
-        EXPECT_NE(result.out.find("The default, point-lights, is also the original's final animation"), std::string::npos) << result.out;
+        EXPECT_NE(result.out.find("The default, point-lights, is also the original's final animation"),
+                  std::string::npos)
+            << result.out;
     }
 }
 
 TEST(CubeApps, LitStyleIsTheDiarysLitCube) {
     const ScratchDir dir;
-    const auto result = run(test_support::kStillCube, {"--style", "lit", "--width", "100", "--height", "80", "lit.webp"}, dir.path());
+    const auto result =
+        run(test_support::kStillCube, {"--style", "lit", "--width", "100", "--height", "80", "lit.webp"}, dir.path());
     ASSERT_EQ(result.exit_code, 0) << result.err;
     Framebuffer expected(100, 80);
     raster::render_still_cube(expected, raster::CubeStyle::lit);
@@ -136,7 +150,8 @@ TEST(CubeApps, LitStyleIsTheDiarysLitCube) {
 
 TEST(StillSceneApp, TheSeedScenesRenderInTheirOwnCamerasAndRefuseDiaryOptions) {
     const ScratchDir dir;
-    const auto result = run(kStillScene, {"--scene", "ptah", "--width", "160", "--height", "120", "p.webp"}, dir.path());
+    const auto result =
+        run(kStillScene, {"--scene", "ptah", "--width", "160", "--height", "120", "p.webp"}, dir.path());
     ASSERT_EQ(result.exit_code, 0) << result.err;
     Framebuffer expected(160, 120);
     raster::DepthBuffer depth;
@@ -153,20 +168,25 @@ TEST(StillSceneApp, TheSeedScenesRenderInTheirOwnCamerasAndRefuseDiaryOptions) {
 
 TEST(AnimatedSceneApp, TheFlightIsAnAnimationOfItsOwnFrames) {
     const ScratchDir dir;
-    const auto result = run(kAnimatedScene, {"--scene", "flythrough", "--frames", "4", "--width", "64", "--height", "48", "--effort", "fast", "f.webp"},
-                            dir.path());
+    const auto result =
+        run(kAnimatedScene,
+            {"--scene", "flythrough", "--frames", "4", "--width", "64", "--height", "48", "--effort", "fast", "f.webp"},
+            dir.path());
     ASSERT_EQ(result.exit_code, 0) << result.err;
     const raster::DecodedWebp clip = raster::read_webp(dir / "f.webp");
     ASSERT_EQ(clip.frames.size(), 4U);
     Framebuffer expected(64, 48);
     raster::DepthBuffer depth;
-    raster::render(expected, raster::SeedScene("flythrough").frame(64, 48, 2, 4), depth, {.samples = raster::kSmoothSamples});
+    raster::render(expected, raster::SeedScene("flythrough").frame(64, 48, 2, 4), depth,
+                   {.samples = raster::kSmoothSamples});
     EXPECT_EQ(clip.frames[2].image, expected);
 }
 
 TEST(StillSceneApp, AViewFramesOneElementOfTheIslandsInAnyStyle) {
     const ScratchDir dir;
-    const auto result = run(kStillScene, {"--width=64", "falls.webp", "--view", "waterfall", "--height", "48", "--effort", "fast"}, dir.path());
+    const auto result =
+        run(kStillScene, {"--width=64", "falls.webp", "--view", "waterfall", "--height", "48", "--effort", "fast"},
+            dir.path());
     ASSERT_EQ(result.exit_code, 0) << result.err;
     const raster::SeedScene islands("islands");
     Framebuffer expected(64, 48);
@@ -174,7 +194,9 @@ TEST(StillSceneApp, AViewFramesOneElementOfTheIslandsInAnyStyle) {
     raster::render(expected, islands.view("waterfall", 64, 48), depth, {.samples = raster::kSmoothSamples});
     EXPECT_EQ(raster::read_webp(dir / "falls.webp").frames.at(0).image, expected);
 
-    const auto wire = run(kStillScene, {"--scene", "islands", "w.webp", "--style=wireframe", "--width", "64", "--height", "48"}, dir.path());
+    const auto wire =
+        run(kStillScene, {"--scene", "islands", "w.webp", "--style=wireframe", "--width", "64", "--height", "48"},
+            dir.path());
     ASSERT_EQ(wire.exit_code, 0) << wire.err;
     Framebuffer lines(64, 48);
     raster::draw_wireframe(lines, islands.still(64, 48));
@@ -194,13 +216,16 @@ TEST(StillSceneApp, AViewFramesOneElementOfTheIslandsInAnyStyle) {
 
 TEST(AnimatedSceneApp, TheIslandsFlyInFlatStyleFrameForFrame) {
     const ScratchDir dir;
-    const auto result = run(kAnimatedScene, {"i.webp", "--scene", "islands", "--frames", "3", "--style", "flat", "--width", "48", "--height", "36", "--effort", "fast"},
+    const auto result = run(kAnimatedScene,
+                            {"i.webp", "--scene", "islands", "--frames", "3", "--style", "flat", "--width", "48",
+                             "--height", "36", "--effort", "fast"},
                             dir.path());
     ASSERT_EQ(result.exit_code, 0) << result.err;
     const raster::DecodedWebp clip = raster::read_webp(dir / "i.webp");
     ASSERT_EQ(clip.frames.size(), 3U);
     Framebuffer expected(48, 36);
     raster::DepthBuffer depth;
-    raster::render(expected, raster::flat_style(raster::SeedScene("islands").frame(48, 36, 1, 3)), depth, {.samples = raster::kSmoothSamples});
+    raster::render(expected, raster::flat_style(raster::SeedScene("islands").frame(48, 36, 1, 3)), depth,
+                   {.samples = raster::kSmoothSamples});
     EXPECT_EQ(clip.frames[1].image, expected);
 }

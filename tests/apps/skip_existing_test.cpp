@@ -25,7 +25,8 @@ std::vector<std::string> with(std::vector<std::string> arguments, const std::vec
     return arguments;
 }
 
-const std::vector<std::string> kPart{"--width", "64", "--height", "48", "--effort", "fast", "--frames", "10", "--frame-range", "2..5", "--skip-existing"};
+const std::vector<std::string> kPart{"--width",  "64", "--height",      "48",   "--effort",       "fast",
+                                     "--frames", "10", "--frame-range", "2..5", "--skip-existing"};
 
 }  // namespace
 
@@ -60,7 +61,9 @@ TEST(SkipExisting, OnlyNumberedFramesThatDecodeAsPngAreKept) {
     ASSERT_EQ(refill.exit_code, 0) << refill.err;
     EXPECT_NE(refill.out.find(": 3 PNG frames of 32x24"), std::string::npos) << refill.out;
     EXPECT_NE(refill.out.find("3 already there kept"), std::string::npos) << refill.out;
-    for (int i = 0; i < 6; ++i) EXPECT_EQ(read_bytes(dir / "f" / ("000" + std::to_string(i) + ".png")), drawn[static_cast<std::size_t>(i)]) << i;
+    for (int i = 0; i < 6; ++i)
+        EXPECT_EQ(read_bytes(dir / "f" / ("000" + std::to_string(i) + ".png")), drawn[static_cast<std::size_t>(i)])
+            << i;
     // A link or a directory under a frame's name is not a frame: it is in the way, and said so.
     std::filesystem::remove(dir / "f" / "0004.png");
     std::filesystem::create_symlink("0000.png", dir / "f" / "0004.png");
@@ -78,7 +81,8 @@ TEST(SkipExisting, ABatchDrawsAgainPicturesThatAreEmptyDamagedOrNotWebp) {
     const ScratchDir dir;
     const std::string crate = test_support::write_crate_on_floor(dir.path()).string();
     for (const char* copy : {"b.obj", "c.obj", "d.obj"}) std::filesystem::copy_file(crate, dir / copy);
-    const std::vector<std::string> batch{"--width", "32", "--height", "24", "--output-dir", "t", crate, "b.obj", "c.obj", "d.obj"};
+    const std::vector<std::string> batch{"--width", "32",  "--height", "24",    "--output-dir",
+                                         "t",       crate, "b.obj",    "c.obj", "d.obj"};
     ASSERT_EQ(run(kRender, with(batch, {"--quiet"}), dir.path()).exit_code, 0);
     const std::vector<std::uint8_t> picture = read_bytes(dir / "t" / "b.webp");
     test_support::write_text(dir / "t" / "b.webp", "");
@@ -91,5 +95,6 @@ TEST(SkipExisting, ABatchDrawsAgainPicturesThatAreEmptyDamagedOrNotWebp) {
     EXPECT_NE(again.err.find(", 1 already there kept; 1 failed"), std::string::npos) << again.err;
     EXPECT_EQ(read_bytes(dir / "t" / "b.webp"), picture);
     EXPECT_EQ(read_bytes(dir / "t" / "c.webp"), picture);
-    EXPECT_NE(again.err.find("render: d.obj: cannot write 't/d.webp': it is a directory\n"), std::string::npos) << again.err;
+    EXPECT_NE(again.err.find("render: d.obj: cannot write 't/d.webp': it is a directory\n"), std::string::npos)
+        << again.err;
 }

@@ -1,7 +1,7 @@
 // webp-assemble against damaged parts, many frames and standard output.
+#include <raster/io/output_file.hpp>
 #include <raster/io/webp.hpp>
 #include <raster/io/webp_parts.hpp>
-#include <raster/io/output_file.hpp>
 
 #include "support/scratch.hpp"
 #include "support/webp_files.hpp"
@@ -38,8 +38,8 @@ std::vector<std::vector<std::uint8_t>> many_frame_parts(int frames) {
     const std::vector<test_support::HandFrame> all(static_cast<std::size_t>(frames), frame);
     std::vector<std::vector<std::uint8_t>> parts;
     for (int k = 0; k < 2; ++k) {
-        const std::vector<std::uint8_t> marked =
-            raster::mark_frame_range(test_support::animated_webp(2, 2, all), {k * frames, k * frames + frames - 1, 2 * frames, 20});
+        const std::vector<std::uint8_t> marked = raster::mark_frame_range(
+            test_support::animated_webp(2, 2, all), {k * frames, k * frames + frames - 1, 2 * frames, 20});
         parts.push_back(marked);
     }
     return parts;
@@ -53,7 +53,9 @@ TEST(WebpAssemble, ACorruptFrameAfterAPartsFirstIsRefusedNamingThePartAndTheFram
     const std::vector<std::uint8_t> good = read_bytes(dir / "b.webp");
     // b.webp's third frame is the clip's frame 6: its picture's signature byte, then its size, damaged.
     const std::size_t picture = test_support::find_tag(good, "ANMF", 2) + 8 + 16;
-    ASSERT_EQ(std::string(good.begin() + static_cast<std::ptrdiff_t>(picture), good.begin() + static_cast<std::ptrdiff_t>(picture) + 4), "VP8L");
+    ASSERT_EQ(std::string(good.begin() + static_cast<std::ptrdiff_t>(picture),
+                          good.begin() + static_cast<std::ptrdiff_t>(picture) + 4),
+              "VP8L");
     std::vector<std::uint8_t> bad = good;
     bad[picture + 8] = 0;
     raster::write_output_file(dir / "b.webp", bad);
@@ -80,7 +82,8 @@ TEST(WebpAssemble, EightyThousandFramesJoinIntoOneClipInOrder) {
     const auto joined = run(kWebpAssemble, {"clip.webp", "b.webp", "a.webp"}, dir.path());
     ASSERT_EQ(joined.exit_code, 0) << joined.err;
     EXPECT_EQ(joined.out.rfind("Wrote clip.webp: 80000 frames from 2 parts, ", 0), 0U) << joined.out;
-    const raster::WebpInfo info = raster::for_each_webp_frame(dir / "clip.webp", [](const raster::DecodedFrame& frame) { return frame.start_ms == 0; });
+    const raster::WebpInfo info = raster::for_each_webp_frame(
+        dir / "clip.webp", [](const raster::DecodedFrame& frame) { return frame.start_ms == 0; });
     EXPECT_EQ(info.frame_count, 80000);
 }
 

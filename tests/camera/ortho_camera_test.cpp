@@ -1,12 +1,12 @@
 #include <raster/camera/ortho_camera.hpp>
 
 #include <cmath>
+#include <limits>
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <glm/geometric.hpp>
-#include <optional>
 #include <gtest/gtest.h>
-#include <limits>
-#include <stdexcept>
 
 using raster::OrthoCamera;
 
@@ -45,9 +45,7 @@ TEST(OrthoCamera, DepthDoesNotMoveAPointOnScreen) {
     }
 }
 
-TEST(OrthoCamera, LooksAlongPositiveZ) {
-    EXPECT_EQ(OrthoCamera(8, 8).direction(), glm::vec3(0, 0, 1));
-}
+TEST(OrthoCamera, LooksAlongPositiveZ) { EXPECT_EQ(OrthoCamera(8, 8).direction(), glm::vec3(0, 0, 1)); }
 
 TEST(OrthoCamera, SnapsToTheNearestSubpixelWithHalvesUp) {
     EXPECT_EQ(raster::snap_to_subpixel({2.5, 1.0 / 512}), (raster::SubpixelPoint{640, 1}));
@@ -57,8 +55,9 @@ TEST(OrthoCamera, SnapsToTheNearestSubpixelWithHalvesUp) {
 // The snap takes its floor by truncation; it must agree with std::floor everywhere in range.
 TEST(OrthoCamera, SnapsLikeStdFloorOnEitherSideOfZeroAndAtTheLimit) {
     const double limit = raster::kMaxSubpixelCoordinate;
-    for (const double screen : {0.0, -0.0, 1.0 / 512, -1.0 / 512, -1.0 / 256, -3.0 / 512, 7.75, -7.75, -7.998046875,
-                                limit - 1.0 / 512, -limit + 1.0 / 1024, limit, -limit, limit + 1.0 / 1024, -limit - 1.0 / 256}) {
+    for (const double screen :
+         {0.0, -0.0, 1.0 / 512, -1.0 / 512, -1.0 / 256, -3.0 / 512, 7.75, -7.75, -7.998046875, limit - 1.0 / 512,
+          -limit + 1.0 / 1024, limit, -limit, limit + 1.0 / 1024, -limit - 1.0 / 256}) {
         const double expected = std::floor(screen * raster::kSubpixelOne + 0.5);
         const std::optional<raster::SubpixelPoint> snapped = raster::snap_to_subpixel({screen, -screen});
         const double expected_y = std::floor(-screen * raster::kSubpixelOne + 0.5);
@@ -83,8 +82,8 @@ TEST(OrthoCamera, NonFiniteAndFarAwayPositionsGiveNoPixel) {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     const double inf = std::numeric_limits<double>::infinity();
     const double far = raster::kMaxSubpixelCoordinate + 1.0;
-    for (const glm::dvec2 screen : {glm::dvec2(nan, 0), glm::dvec2(0, nan), glm::dvec2(inf, 0),
-                                    glm::dvec2(0, -inf), glm::dvec2(far, 0), glm::dvec2(0, -far)}) {
+    for (const glm::dvec2 screen : {glm::dvec2(nan, 0), glm::dvec2(0, nan), glm::dvec2(inf, 0), glm::dvec2(0, -inf),
+                                    glm::dvec2(far, 0), glm::dvec2(0, -far)}) {
         EXPECT_FALSE(raster::snap_to_subpixel(screen).has_value()) << screen.x << ", " << screen.y;
     }
     EXPECT_TRUE(raster::snap_to_subpixel({far - 2.0, 1 - far}).has_value());
@@ -96,9 +95,16 @@ TEST(OrthoCamera, NonFiniteAndFarAwayPositionsGiveNoPixel) {
 TEST(OrthoCamera, RejectsEmptyNegativeAndExtremeSizes) {
     constexpr int kMin = std::numeric_limits<int>::min();
     constexpr int kMax = std::numeric_limits<int>::max();
-    for (const auto& [width, height] : {std::pair{0, 600}, {800, 0}, {-1, 600}, {800, -600}, {kMin, 600},
-                                       {800, kMin}, {kMin, kMin}, {kMax, 600}, {800, kMax},
-                                       {raster::kMaxSubpixelCoordinate + 1, 600}}) {
+    for (const auto& [width, height] : {std::pair{0, 600},
+                                        {800, 0},
+                                        {-1, 600},
+                                        {800, -600},
+                                        {kMin, 600},
+                                        {800, kMin},
+                                        {kMin, kMin},
+                                        {kMax, 600},
+                                        {800, kMax},
+                                        {raster::kMaxSubpixelCoordinate + 1, 600}}) {
         EXPECT_THROW(OrthoCamera(width, height), std::invalid_argument) << width << "x" << height;
     }
     EXPECT_NO_THROW(OrthoCamera(1, 1));

@@ -4,9 +4,9 @@
 
 #include <raster/shade/shaders.hpp>
 
-#include <raster/scenes/diary_scenes.hpp>
-#include <raster/render/scene.hpp>
 #include <raster/geometry/shapes.hpp>
+#include <raster/render/scene.hpp>
+#include <raster/scenes/diary_scenes.hpp>
 
 #include "recording_shader.hpp"
 #include "support/picture.hpp"
@@ -85,26 +85,32 @@ TEST(Perspective, FirstPersonYawTurnsTowardXAndPitchRaisesTheView) {
     EXPECT_NEAR(glm::distance(look(std::numbers::pi / 4, 0), glm::normalize(glm::vec3(0, 1, 1))), 0.0F, 1e-6F);
     EXPECT_EQ(PerspectiveCamera::first_person(64, 48, {1, 2, 3}, 0, 0, kRightAngle).eye(), glm::vec3(1, 2, 3));
     // Far from the origin the direction still survives the look-at target's rounding to float.
-    const glm::vec3 far_view = PerspectiveCamera::first_person(64, 48, {1e6F, 5e5F, -3e6F}, 0.2, 0.3, kRightAngle).direction();
+    const glm::vec3 far_view =
+        PerspectiveCamera::first_person(64, 48, {1e6F, 5e5F, -3e6F}, 0.2, 0.3, kRightAngle).direction();
     const glm::vec3 expected(std::sin(0.3) * std::cos(0.2), std::sin(0.2), std::cos(0.3) * std::cos(0.2));
     EXPECT_LT(glm::distance(far_view, expected), 1e-6F);
 }
 
 TEST(Perspective, BadLensesAndPosesAreClearErrors) {
     const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
-    for (const PerspectiveCamera::Lens lens : {PerspectiveCamera::Lens{0, 0.1, 10}, PerspectiveCamera::Lens{180, 0.1, 10},
-                                               PerspectiveCamera::Lens{nan, 0.1, 10}, PerspectiveCamera::Lens{60, 0, 10},
-                                               PerspectiveCamera::Lens{60, -1, 10}, PerspectiveCamera::Lens{60, 1, 1},
-                                               PerspectiveCamera::Lens{60, 1, inf}, PerspectiveCamera::Lens{60, nan, 10},
-                                               PerspectiveCamera::Lens{60, 1e-19, 10}, PerspectiveCamera::Lens{60, 1, 1e19}}) {
-        EXPECT_THROW((void)ahead(8, 8, lens), std::invalid_argument) << lens.fov_y_degrees << " " << lens.near << " " << lens.far;
+    for (const PerspectiveCamera::Lens lens :
+         {PerspectiveCamera::Lens{0, 0.1, 10}, PerspectiveCamera::Lens{180, 0.1, 10},
+          PerspectiveCamera::Lens{nan, 0.1, 10}, PerspectiveCamera::Lens{60, 0, 10},
+          PerspectiveCamera::Lens{60, -1, 10}, PerspectiveCamera::Lens{60, 1, 1}, PerspectiveCamera::Lens{60, 1, inf},
+          PerspectiveCamera::Lens{60, nan, 10}, PerspectiveCamera::Lens{60, 1e-19, 10},
+          PerspectiveCamera::Lens{60, 1, 1e19}}) {
+        EXPECT_THROW((void)ahead(8, 8, lens), std::invalid_argument)
+            << lens.fov_y_degrees << " " << lens.near << " " << lens.far;
     }
-    EXPECT_THROW((void)PerspectiveCamera::look_at(8, 8, {0, 0, 0}, {0, 0, 0}, {0, 1, 0}, kRightAngle), std::invalid_argument);
-    EXPECT_THROW((void)PerspectiveCamera::look_at(8, 8, {0, 0, 0}, {0, 5, 0}, {0, 1, 0}, kRightAngle), std::invalid_argument);
+    EXPECT_THROW((void)PerspectiveCamera::look_at(8, 8, {0, 0, 0}, {0, 0, 0}, {0, 1, 0}, kRightAngle),
+                 std::invalid_argument);
+    EXPECT_THROW((void)PerspectiveCamera::look_at(8, 8, {0, 0, 0}, {0, 5, 0}, {0, 1, 0}, kRightAngle),
+                 std::invalid_argument);
     EXPECT_THROW((void)PerspectiveCamera::first_person(8, 8, {0, 0, 0}, std::numbers::pi / 2, 0, kRightAngle),
                  std::invalid_argument);
     EXPECT_THROW((void)PerspectiveCamera::first_person(8, 8, {0, 0, 0}, 0, nan, kRightAngle), std::invalid_argument);
-    EXPECT_THROW((void)PerspectiveCamera::look_at(0, 8, {0, 0, 0}, {0, 0, 1}, {0, 1, 0}, kRightAngle), std::invalid_argument);
+    EXPECT_THROW((void)PerspectiveCamera::look_at(0, 8, {0, 0, 0}, {0, 0, 1}, {0, 1, 0}, kRightAngle),
+                 std::invalid_argument);
 }
 
 // A floor from far behind the eye to far ahead crosses w = 0 and the near plane; clipped, it
@@ -112,25 +118,21 @@ TEST(Perspective, BadLensesAndPosesAreClearErrors) {
 TEST(Clipping, AFloorThroughTheEyeFillsTheRowsBelowTheHorizon) {
     Framebuffer image(8, 8);
     const float y = -1.0F, reach = 100.0F;
-    EXPECT_EQ(draw(image, ahead(8, 8),
-                   {raster::ground_quad({-reach, y, -reach}, {reach, y, -reach}, {reach, y, reach}, {-reach, y, reach})}),
-              2U);
-    EXPECT_TRUE(looks_like(image, {"........",
-                                   "........",
-                                   "........",
-                                   "........",
-                                   "########",
-                                   "########",
-                                   "########",
-                                   "########"},
-                           kWhite));
+    EXPECT_EQ(
+        draw(image, ahead(8, 8),
+             {raster::ground_quad({-reach, y, -reach}, {reach, y, -reach}, {reach, y, reach}, {-reach, y, reach})}),
+        2U);
+    EXPECT_TRUE(looks_like(
+        image, {"........", "........", "........", "........", "########", "########", "########", "########"},
+        kWhite));
 }
 
 TEST(Clipping, TrianglesBehindTheEyeOrBeyondFarDrawNothing) {
     Framebuffer image(16, 16);
     EXPECT_EQ(draw(image, ahead(16, 16), {triangle({-1, -1, -2}, {0, 1, -2}, {1, -1, -2})}), 0U);
     EXPECT_EQ(draw(image, ahead(16, 16), {triangle({-1, -1, 2000}, {0, 1, 2000}, {1, -1, 2000})}), 0U);
-    EXPECT_EQ(draw(image, ahead(16, 16), {triangle({-1, -1, 0.05F}, {0, 1, 0.05F}, {1, -1, 0.05F})}), 0U);  // before near
+    EXPECT_EQ(draw(image, ahead(16, 16), {triangle({-1, -1, 0.05F}, {0, 1, 0.05F}, {1, -1, 0.05F})}),
+              0U);  // before near
     EXPECT_TRUE(looks_like(image, std::vector<std::string>(16, "................"), kWhite));
 }
 
@@ -145,7 +147,8 @@ TEST(Clipping, ATriangleCrossingTheEyeDrawsItsPartInFrontOfTheNearPlane) {
     const glm::vec3 ab = a + (b - a) * t, bc = c + (b - c) * t;
     Framebuffer by_hand(32, 24);
     draw(by_hand, ahead(32, 24), {triangle(a, c, bc), triangle(a, bc, ab)});
-    EXPECT_EQ(clipped, by_hand) << test_support::to_ascii_art(clipped, kWhite) << "\n" << test_support::to_ascii_art(by_hand, kWhite);
+    EXPECT_EQ(clipped, by_hand) << test_support::to_ascii_art(clipped, kWhite) << "\n"
+                                << test_support::to_ascii_art(by_hand, kWhite);
     int covered = 0;
     for (int y = 0; y < 24; ++y) {
         for (int x = 0; x < 32; ++x) covered += clipped.pixel(x, y).r == 255 ? 1 : 0;
@@ -175,7 +178,8 @@ TEST(Clipping, ATriangleCrossingTheFarPlaneDrawsItsPartNearerThanFar) {
     EXPECT_EQ(draw(clipped, camera, {triangle(a, b, c)}), 1U);
     const glm::vec3 ab = a + (b - a) * 0.5F, cb = c + (b - c) * 0.5F;  // where the edges reach z = 10
     draw(by_hand, camera, {triangle(a, ab, cb), triangle(a, cb, c)});
-    EXPECT_EQ(clipped, by_hand) << test_support::to_ascii_art(clipped, kWhite) << "\n" << test_support::to_ascii_art(by_hand, kWhite);
+    EXPECT_EQ(clipped, by_hand) << test_support::to_ascii_art(clipped, kWhite) << "\n"
+                                << test_support::to_ascii_art(by_hand, kWhite);
     Framebuffer whole(32, 24);
     draw(whole, ahead(32, 24, {90.0, 0.1, 100.0}), {triangle(a, b, c)});
     EXPECT_NE(clipped, whole);  // with a farther far plane more of it shows
@@ -192,7 +196,8 @@ struct FootprintRecorder {
     [[nodiscard]] raster::Rgb pixel(const glm::vec3& world, const glm::vec3& per_x, const glm::vec3&) const noexcept {
         const auto index = static_cast<std::uint32_t>(seen->size());
         seen->emplace_back(world, per_x);
-        return {static_cast<std::uint8_t>(index >> 16), static_cast<std::uint8_t>(index >> 8), static_cast<std::uint8_t>(index)};
+        return {static_cast<std::uint8_t>(index >> 16), static_cast<std::uint8_t>(index >> 8),
+                static_cast<std::uint8_t>(index)};
     }
 };
 
@@ -201,7 +206,8 @@ struct FootprintRecorder {
 // The change per pixel a shader is handed (for mip levels) is the true derivative of the
 // perspective-correct value: it matches the difference between neighbouring pixels.
 TEST(PerspectiveInterpolation, ShadersGetTheExactChangePerPixel) {
-    const PerspectiveCamera camera = PerspectiveCamera::look_at(40, 30, {0, 1, -1}, {0, 0, 3}, {0, 1, 0}, {70, 0.1, 100});
+    const PerspectiveCamera camera =
+        PerspectiveCamera::look_at(40, 30, {0, 1, -1}, {0, 0, 3}, {0, 1, 0}, {70, 0.1, 100});
     raster::Mesh floor = raster::ground_quad({-2, 0, 0}, {2, 0, 0}, {2, 0, 20}, {-2, 0, 20});
     floor.surface = raster::Surface::smooth;
     Framebuffer image(40, 30);
@@ -214,7 +220,8 @@ TEST(PerspectiveInterpolation, ShadersGetTheExactChangePerPixel) {
             const std::uint32_t a = lab::recorded_index(image, x, y), b = lab::recorded_index(image, x + 1, y);
             if (a >= seen.size() || b >= seen.size()) continue;
             const glm::vec3 difference = seen[b].first - seen[a].first;
-            const glm::vec3 mean_change = (seen[a].second + seen[b].second) * 0.5F;  // the derivative at the midpoint, to second order
+            const glm::vec3 mean_change =
+                (seen[a].second + seen[b].second) * 0.5F;  // the derivative at the midpoint, to second order
             EXPECT_NEAR(mean_change.x, difference.x, 1e-3F + 0.01F * std::abs(difference.x)) << x << "," << y;
             EXPECT_NEAR(mean_change.z, difference.z, 1e-3F + 0.01F * std::abs(difference.z)) << x << "," << y;
             ++compared;
@@ -226,7 +233,8 @@ TEST(PerspectiveInterpolation, ShadersGetTheExactChangePerPixel) {
 // Under perspective, attributes are interpolated through 1/w: the world position a shader sees
 // at each covered pixel lies on the line of sight through that pixel's centre.
 TEST(PerspectiveInterpolation, TheSurfacePointAtEveryPixelIsOnItsLineOfSight) {
-    const PerspectiveCamera camera = PerspectiveCamera::look_at(40, 30, {0, 1, -1}, {0, 0, 3}, {0, 1, 0}, {70, 0.1, 100});
+    const PerspectiveCamera camera =
+        PerspectiveCamera::look_at(40, 30, {0, 1, -1}, {0, 0, 3}, {0, 1, 0}, {70, 0.1, 100});
     // A long floor receding from the camera: affine interpolation would be pixels off here.
     raster::Mesh floor = raster::ground_quad({-2, 0, 0}, {2, 0, 0}, {2, 0, 20}, {-2, 0, 20});
     floor.surface = raster::Surface::smooth;
@@ -235,7 +243,8 @@ TEST(PerspectiveInterpolation, TheSurfacePointAtEveryPixelIsOnItsLineOfSight) {
     image.clear({255, 255, 255});
     raster::DepthBuffer depth;
     depth.prepare(40, 30);
-    EXPECT_GT(raster::detail::draw_facets_in_perspective(image, &depth, camera, floor, lab::RecordingShader{&seen}), 0U);
+    EXPECT_GT(raster::detail::draw_facets_in_perspective(image, &depth, camera, floor, lab::RecordingShader{&seen}),
+              0U);
     ASSERT_GT(seen.size(), 100U);
     // Every written pixel's point projects back onto that pixel's centre, to within the 1/256 px
     // the corners were snapped by (interpolating linearly on screen would be pixels off here),

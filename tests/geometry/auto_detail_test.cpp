@@ -20,14 +20,16 @@ struct Posed {
     raster::Scene scene;
     [[nodiscard]] const raster::SceneObject& object() const { return scene.objects.front(); }
     [[nodiscard]] DetailChoice choose() const {
-        return raster::choose_detail(shape, object().model, scene.camera, std::get<raster::IntensityMaterial>(object().material), scene.lights);
+        return raster::choose_detail(shape, object().model, scene.camera,
+                                     std::get<raster::IntensityMaterial>(object().material), scene.lights);
     }
     [[nodiscard]] double silhouette_px(int level) const {
         return raster::surface_deviation(shape, raster::tessellate(shape, level)) * scene.camera.scale() *
                raster::model_stretch(object().model).most;
     }
     [[nodiscard]] double shading(int level, ShadingMethod method) const {
-        const raster::IntensityLighting lighting(std::get<raster::IntensityMaterial>(object().material), scene.lights, -scene.camera.direction());
+        const raster::IntensityLighting lighting(std::get<raster::IntensityMaterial>(object().material), scene.lights,
+                                                 -scene.camera.direction());
         const raster::Mesh mesh = raster::posed(raster::tessellate(shape, level), object().model);
         return raster::shading_error_levels(shape, mesh, object().model, scene.camera, method, lighting);
     }
@@ -52,7 +54,8 @@ TEST(AutoDetail, MeetsBothTolerancesWhereTheDiaryDetailDoesNot) {
 }
 
 TEST(AutoDetail, NothingCoarserOrCheaperMeetsTheTargets) {
-    for (const Posed& posed : {still("phong-sphere", ShapeKind::sphere, 800, 600), still("smooth-sphere", ShapeKind::sphere, 800, 600)}) {
+    for (const Posed& posed :
+         {still("phong-sphere", ShapeKind::sphere, 800, 600), still("smooth-sphere", ShapeKind::sphere, 800, 600)}) {
         const DetailChoice choice = posed.choose();
         ASSERT_GT(choice.level, 0);
         const int coarser = choice.level - 1;
@@ -102,12 +105,14 @@ TEST(AutoDetail, TheRayCastSurfaceAgreesWithinOneLevelInsideTheOutline) {
     const DetailChoice choice = sphere.choose();
     raster::Scene scene = sphere.scene;
     scene.background = {255, 0, 255};
-    scene.objects.front().mesh = std::make_shared<const raster::Mesh>(raster::tessellate(ShapeKind::sphere, choice.level));
+    scene.objects.front().mesh =
+        std::make_shared<const raster::Mesh>(raster::tessellate(ShapeKind::sphere, choice.level));
     scene.objects.front().shading = choice.shading;
     raster::Framebuffer image(kWidth, kHeight);
     raster::DepthBuffer depth;
     raster::render(image, scene, depth);
-    const std::vector<lab::ExactObject> exact{{ShapeKind::sphere, sphere.object().model, std::get<raster::IntensityMaterial>(sphere.object().material)}};
+    const std::vector<lab::ExactObject> exact{
+        {ShapeKind::sphere, sphere.object().model, std::get<raster::IntensityMaterial>(sphere.object().material)}};
     const lab::ExactImage reference = lab::ray_cast(scene.camera, kWidth, kHeight, exact, scene.lights, {255, 0, 255});
     int compared = 0;
     for (int y = 1; y + 1 < kHeight; ++y) {
@@ -137,7 +142,9 @@ TEST(AutoDetail, ClipsPlanOnceForEveryFrameAndNonFiniteModelsAreAClearError) {
     ASSERT_TRUE(plan.choices[0].has_value());
     for (const raster::Scene& frame : frames) {
         const raster::SceneObject& object = frame.objects.front();
-        const DetailChoice alone = raster::choose_detail(ShapeKind::sphere, object.model, frame.camera, std::get<raster::IntensityMaterial>(object.material), frame.lights);
+        const DetailChoice alone =
+            raster::choose_detail(ShapeKind::sphere, object.model, frame.camera,
+                                  std::get<raster::IntensityMaterial>(object.material), frame.lights);
         EXPECT_GE(plan.choices[0]->level, alone.level);
         EXPECT_GE(plan.choices[0]->shading, alone.shading);
     }
@@ -145,7 +152,9 @@ TEST(AutoDetail, ClipsPlanOnceForEveryFrameAndNonFiniteModelsAreAClearError) {
     EXPECT_EQ(detailed.objects.front().mesh, plan.meshes[0]);
     glm::mat4 broken(1.0F);
     broken[0][0] = std::numeric_limits<float>::quiet_NaN();
-    EXPECT_THROW((void)raster::choose_detail(ShapeKind::torus, broken, frames[0].camera, std::get<raster::IntensityMaterial>(frames[0].objects[0].material), frames[0].lights),
+    EXPECT_THROW((void)raster::choose_detail(ShapeKind::torus, broken, frames[0].camera,
+                                             std::get<raster::IntensityMaterial>(frames[0].objects[0].material),
+                                             frames[0].lights),
                  std::invalid_argument);
 }
 
@@ -153,9 +162,11 @@ TEST(AutoDetail, ClipsPlanOnceForEveryFrameAndNonFiniteModelsAreAClearError) {
 // crossing at 0.01 degrees, which 32-bit float view depth keeps; float fails in turn at a gap
 // of 1e-7, below its resolution at depth 1.
 TEST(DepthFormats, SixteenBitFixedLosesNearlyCoplanarPlanesThatFloatKeeps) {
-    const auto wrong = [rows = lab::measure_depth(1)](const std::string& scene, double parameter, const std::string& format) {
+    const auto wrong = [rows = lab::measure_depth(1)](const std::string& scene, double parameter,
+                                                      const std::string& format) {
         for (const lab::DepthRow& row : rows) {
-            if (row.scene == scene && std::abs(row.parameter / parameter - 1.0) < 1e-9 && row.format == format) return row.wrong_pixels;
+            if (row.scene == scene && std::abs(row.parameter / parameter - 1.0) < 1e-9 && row.format == format)
+                return row.wrong_pixels;
         }
         return std::int64_t{-1};
     };
@@ -174,20 +185,24 @@ TEST(AutoDetail, PhaseTwoSurfacesArePlannedByTheirEncodedColour) {
     ASSERT_EQ(lamp.objects.size(), 2U);
     const raster::SceneObject& marker = lamp.objects[1];
     const auto& gold = std::get<raster::LinearMaterial>(marker.material);
-    const DetailChoice dot = raster::choose_detail(ShapeKind::sphere, marker.model, lamp.camera, gold, lamp.lights, lamp.point_lights);
+    const DetailChoice dot =
+        raster::choose_detail(ShapeKind::sphere, marker.model, lamp.camera, gold, lamp.lights, lamp.point_lights);
     EXPECT_EQ(dot.shading, ShadingMethod::flat);
     EXPECT_EQ(dot.shading_levels, 0.0);
 
     const raster::Scene torus = raster::DiaryScene("point-lights").still(400, 300);
     const raster::SceneObject& ring = torus.objects.front();
     const auto& palette = std::get<raster::LinearMaterial>(ring.material);
-    const DetailChoice alone = raster::choose_detail(ShapeKind::torus, ring.model, torus.camera, palette, torus.lights, torus.point_lights);
+    const DetailChoice alone =
+        raster::choose_detail(ShapeKind::torus, ring.model, torus.camera, palette, torus.lights, torus.point_lights);
     EXPECT_EQ(alone.shading, ShadingMethod::phong);
     EXPECT_LT(alone.shading_levels, raster::kShadingToleranceLevels);
     // Flat shading on the same mesh is visibly off, measured in levels of the written bytes.
     const raster::LinearLighting lighting(palette, torus.lights, torus.point_lights, -torus.camera.direction());
     const raster::Mesh mesh = raster::posed(raster::tessellate(ShapeKind::torus, alone.level), ring.model);
-    EXPECT_GT(raster::shading_error_levels(ShapeKind::torus, mesh, ring.model, torus.camera, ShadingMethod::flat, lighting), 2.0);
+    EXPECT_GT(
+        raster::shading_error_levels(ShapeKind::torus, mesh, ring.model, torus.camera, ShadingMethod::flat, lighting),
+        2.0);
 
     const raster::DetailPlan plan = raster::plan_detail(std::vector<raster::Scene>{torus});
     ASSERT_EQ(plan.choices.size(), 1U);

@@ -1,14 +1,14 @@
 // Where weak methods fail on meshes, and what the product does there instead.
-#include <raster/shade/shaders.hpp>
+#include <raster/geometry/shapes.hpp>
 #include <raster/rasterize/draw_mesh.hpp>
 #include <raster/render/scene.hpp>
-#include <raster/geometry/shapes.hpp>
+#include <raster/shade/shaders.hpp>
 
 #include <cmath>
-#include <set>
-#include <tuple>
 #include <limits>
 #include <numbers>
+#include <set>
+#include <tuple>
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
@@ -20,7 +20,9 @@ constexpr raster::Rgb kBase{200, 100, 50};
 const float kNaN = std::numeric_limits<float>::quiet_NaN();
 const float kInf = std::numeric_limits<float>::infinity();
 
-std::shared_ptr<const raster::Mesh> shared(raster::Mesh mesh) { return std::make_shared<const raster::Mesh>(std::move(mesh)); }
+std::shared_ptr<const raster::Mesh> shared(raster::Mesh mesh) {
+    return std::make_shared<const raster::Mesh>(std::move(mesh));
+}
 
 // The colours that appear in an image besides the background.
 std::set<std::tuple<int, int, int>> colours_in(const Framebuffer& image, raster::Rgb background) {
@@ -40,7 +42,8 @@ TEST(MeshStability, ZeroAndNaNNormalsShadeAsAmbientNeverNaN) {
     // The weak way, normalising blindly, turns a zero normal into NaN.
     EXPECT_TRUE(std::isnan(glm::normalize(glm::vec3(0.0F)).x));
     raster::Mesh sphere = raster::sphere(2);
-    for (std::size_t i = 0; i < sphere.normals.size(); ++i) sphere.normals[i] = i % 2 == 0 ? glm::vec3(0.0F) : glm::vec3(kNaN);
+    for (std::size_t i = 0; i < sphere.normals.size(); ++i)
+        sphere.normals[i] = i % 2 == 0 ? glm::vec3(0.0F) : glm::vec3(kNaN);
     const auto mesh = shared(sphere);
     const raster::Rgb ambient = raster::scaled_colour(kBase, 0.25F);
     for (const auto method : {raster::ShadingMethod::gouraud, raster::ShadingMethod::phong}) {
@@ -50,7 +53,8 @@ TEST(MeshStability, ZeroAndNaNNormalsShadeAsAmbientNeverNaN) {
         Framebuffer image(60, 40);
         raster::DepthBuffer depth;
         EXPECT_GT(raster::render(image, scene, depth), 0U);
-        EXPECT_EQ(colours_in(image, {0, 0, 0}), (std::set<std::tuple<int, int, int>>{{ambient.r, ambient.g, ambient.b}}));
+        EXPECT_EQ(colours_in(image, {0, 0, 0}),
+                  (std::set<std::tuple<int, int, int>>{{ambient.r, ambient.g, ambient.b}}));
     }
 }
 
@@ -61,14 +65,16 @@ TEST(MeshStability, NonFiniteModelsDrawNothingAndUnusableLightsLeaveAmbient) {
         glm::mat4 model(0.5F);
         model[3][3] = 1.0F;
         model[1][2] = bad;
-        scene.objects.push_back({mesh, model, raster::IntensityMaterial::matte(kBase, 0.25F), raster::ShadingMethod::phong});
+        scene.objects.push_back(
+            {mesh, model, raster::IntensityMaterial::matte(kBase, 0.25F), raster::ShadingMethod::phong});
         Framebuffer image(60, 40);
         raster::DepthBuffer depth;
         EXPECT_EQ(raster::render(image, scene, depth), 0U) << bad;
         EXPECT_TRUE(colours_in(image, {9, 9, 9}).empty()) << bad;
     }
     raster::Scene dark{raster::OrthoCamera(60, 40), {0, 0, 0}, {{{kNaN, 1, -1}}, {{0, 0, 0}}, {{kInf, 0, 0}}}, {}, {}};
-    dark.objects.push_back({shared(raster::sphere(3)), glm::mat4(1.0F), raster::IntensityMaterial::shiny(kBase, 0.25F, 8.0F)});
+    dark.objects.push_back(
+        {shared(raster::sphere(3)), glm::mat4(1.0F), raster::IntensityMaterial::shiny(kBase, 0.25F, 8.0F)});
     Framebuffer image(60, 40);
     raster::DepthBuffer depth;
     raster::render(image, dark, depth);
@@ -84,7 +90,8 @@ TEST(MeshStability, SliversAndZeroAreaFacetsCoverTheDiscExactlyOnce) {
     constexpr int kSlivers = 720;
     for (int i = 0; i < kSlivers; ++i) {
         const double angle = 2.0 * std::numbers::pi * i / kSlivers;
-        disc.positions.push_back({static_cast<float>(0.9 * std::cos(angle)), static_cast<float>(0.9 * std::sin(angle)), 0});
+        disc.positions.push_back(
+            {static_cast<float>(0.9 * std::cos(angle)), static_cast<float>(0.9 * std::sin(angle)), 0});
     }
     for (std::uint32_t i = 0; i < kSlivers; ++i) {
         // Counter-clockwise in the world is clockwise on screen (y flips): facing the camera.
@@ -104,7 +111,8 @@ TEST(MeshStability, SliversAndZeroAreaFacetsCoverTheDiscExactlyOnce) {
         Framebuffer image(81, 81);
         raster::draw_mesh({image}, camera, one, raster::FlatShader{&paint});
         for (int y = 0; y < 81; ++y) {
-            for (int x = 0; x < 81; ++x) hits[static_cast<std::size_t>(y * 81 + x)] += image.pixel(x, y).r == 255 ? 1 : 0;
+            for (int x = 0; x < 81; ++x)
+                hits[static_cast<std::size_t>(y * 81 + x)] += image.pixel(x, y).r == 255 ? 1 : 0;
         }
     }
     for (int y = 0; y < 81; ++y) {

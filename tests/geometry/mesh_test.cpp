@@ -19,7 +19,8 @@ glm::vec3 normal_from_corners(const raster::Mesh& mesh, const raster::Facet& fac
 
 // The 0.0.14 bug: normals moved by the model matrix itself tilt under non-uniform scale.
 TEST(PosedMesh, NormalsStayPerpendicularUnderNonUniformScale) {
-    const raster::Mesh triangle{{{0, 0, 0}, {1, 1, 0}, {1, 0, 1}}, {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}},
+    const raster::Mesh triangle{{{0, 0, 0}, {1, 1, 0}, {1, 0, 1}},
+                                {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}},
                                 {{{0, 1, 2}, raster::facet_normal({0, 0, 0}, {1, 1, 0}, {1, 0, 1})}}};
     const glm::mat4 squash = glm::scale(glm::mat4(1.0F), glm::vec3(1.0F, 0.5F, 1.0F));
     const raster::Mesh posed = raster::posed(triangle, squash);
@@ -63,7 +64,8 @@ TEST(PosedMesh, SingularAndNonFiniteModelsGiveZeroNormalsNotNaN) {
 
 TEST(PosedMesh, PartsLeftOutAreZeroAndTheRestMatchAFullPose) {
     const raster::Mesh sphere = raster::sphere(2);
-    const glm::mat4 model = glm::rotate(glm::scale(glm::mat4(1.0F), glm::vec3(2.0F, 1.0F, 0.5F)), 0.7F, glm::vec3(1, 2, 3));
+    const glm::mat4 model =
+        glm::rotate(glm::scale(glm::mat4(1.0F), glm::vec3(2.0F, 1.0F, 0.5F)), 0.7F, glm::vec3(1, 2, 3));
     const raster::Mesh full = raster::posed(sphere, model);
     const raster::Mesh smooth = raster::posed(sphere, model, {.vertex_normals = true, .facet_normals = false});
     const raster::Mesh flat = raster::posed(sphere, model, {.vertex_normals = false, .facet_normals = true});

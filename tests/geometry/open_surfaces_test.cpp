@@ -1,7 +1,7 @@
 // Open surfaces (a lone triangle, a plane, a leaf) are drawn from both sides; closed ones keep
 // culling their back faces, the fast path.
-#include <raster/render/model_scene.hpp>
 #include <raster/io/obj_file.hpp>
+#include <raster/render/model_scene.hpp>
 
 #include "support/model_files.hpp"
 
@@ -28,7 +28,8 @@ Framebuffer seen_from(double z, raster::Culling cull) {
     view.cull = cull;
     Framebuffer image(24, 24);
     raster::DepthBuffer depth;
-    raster::ModelStage(std::make_shared<const Model>(raster::parse_obj(kTriangle, "")), view, 24, 24).render(image, depth);
+    raster::ModelStage(std::make_shared<const Model>(raster::parse_obj(kTriangle, "")), view, 24, 24)
+        .render(image, depth);
     return image;
 }
 
@@ -57,9 +58,10 @@ TEST(OpenSurfaces, ALoneTriangleIsSeenAndLitFromBothSides) {
 
 TEST(OpenSurfaces, OnlyPartsWithAnEdgeLeftOpenAreDrawnFromBothSides) {
     // The crate test model: a closed cube standing on an open floor quad.
-    const Model crate = raster::parse_obj(test_support::textured_cube_obj("lib.mtl", "crate") +
-                                              "v -3 -1 -3\nv 3 -1 -3\nv 3 -1 3\nv -3 -1 3\nusemtl floor\nf 9 10 11 12\n",
-                                          "newmtl crate\nKd 1 0 0\nnewmtl floor\nKd 0 1 0\n");
+    const Model crate =
+        raster::parse_obj(test_support::textured_cube_obj("lib.mtl", "crate") +
+                              "v -3 -1 -3\nv 3 -1 -3\nv 3 -1 3\nv -3 -1 3\nusemtl floor\nf 9 10 11 12\n",
+                          "newmtl crate\nKd 1 0 0\nnewmtl floor\nKd 0 1 0\n");
     ASSERT_EQ(crate.parts.size(), 2U);
     EXPECT_EQ(raster::open_parts(crate), (std::vector<bool>{false, true}));
     // A closed cube split between two materials is still closed: its seams meet across the parts.
@@ -69,15 +71,18 @@ TEST(OpenSurfaces, OnlyPartsWithAnEdgeLeftOpenAreDrawnFromBothSides) {
     for (std::size_t start = 0; start < cube.size();) {
         const std::size_t end = cube.find('\n', start);
         const std::string line = cube.substr(start, end - start);
-        if (line.rfind("f ", 0) == 0 && face++ % 2 == 0) split += "usemtl a\n" + line + "\nusemtl b\n";
-        else split += line + "\n";
+        if (line.rfind("f ", 0) == 0 && face++ % 2 == 0)
+            split += "usemtl a\n" + line + "\nusemtl b\n";
+        else
+            split += line + "\n";
         start = end + 1;
     }
     const Model two_parts = raster::parse_obj(split, "newmtl a\nKd 1 0 0\nnewmtl b\nKd 0 0 1\n");
     ASSERT_EQ(two_parts.parts.size(), 2U);
     EXPECT_EQ(raster::open_parts(two_parts), (std::vector<bool>{false, false}));
     // A face wound the wrong way leaves its edges running one way twice: open, so it shows.
-    const Model flipped = raster::parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\nf 1 2 3\n", "");
+    const Model flipped =
+        raster::parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\nf 1 2 3\n", "");
     EXPECT_EQ(raster::open_parts(flipped), (std::vector<bool>{true}));
 }
 
@@ -89,7 +94,8 @@ TEST(OpenSurfaces, BothSidesDoublesTheFacetsWithTurnedNormals) {
     ASSERT_EQ(doubled.positions.size(), 2 * mesh.positions.size());
     const raster::Facet& turned = doubled.facets.back();
     EXPECT_EQ(turned.normal, -mesh.facets[0].normal);
-    const glm::vec3 a = doubled.positions[turned.corners[0]], b = doubled.positions[turned.corners[1]], c = doubled.positions[turned.corners[2]];
+    const glm::vec3 a = doubled.positions[turned.corners[0]], b = doubled.positions[turned.corners[1]],
+                    c = doubled.positions[turned.corners[2]];
     EXPECT_EQ(raster::facet_normal(a, b, c), turned.normal);  // clockwise from its own side
     EXPECT_EQ(doubled.normals[turned.corners[0]], -mesh.normals[mesh.facets[0].corners[0]]);
 }

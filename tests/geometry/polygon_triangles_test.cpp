@@ -19,9 +19,7 @@ using Triangles = std::vector<std::array<std::uint32_t, 3>>;
 
 namespace {
 
-double cross(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
-    return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
-}
+double cross(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) { return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x); }
 
 // Twice the signed area, by the shoelace formula.
 double twice_area(const Outline& outline) {
@@ -102,8 +100,8 @@ void expect_covers_once(const Outline& outline, const Triangles& triangles, int 
     for (const auto& t : triangles) {
         const glm::dvec2 a = outline[t[0]], b = outline[t[1]], c = outline[t[2]];
         const glm::ivec2 first = glm::max(glm::ivec2((glm::min(a, glm::min(b, c)) - low) / step) - 1, 0);
-        const glm::ivec2 last = glm::min(glm::ivec2((glm::max(a, glm::max(b, c)) - low) / step) + 1,
-                                         glm::ivec2(columns - 1, rows - 1));
+        const glm::ivec2 last =
+            glm::min(glm::ivec2((glm::max(a, glm::max(b, c)) - low) / step) + 1, glm::ivec2(columns - 1, rows - 1));
         for (int j = first.y; j <= last.y; ++j) {
             for (int i = first.x; i <= last.x; ++i) {
                 covered[static_cast<std::size_t>(j * columns + i)] += strictly_inside(a, b, c, sample(i, j));
@@ -197,8 +195,7 @@ TEST(PolygonTriangles, CollinearCornersCoverTheirAreaOnce) {
 }
 
 TEST(PolygonTriangles, RepeatedConsecutiveCornersCoverTheirAreaOnce) {
-    expect_triangulated_in_every_pose(
-        {{3, 1}, {1, 1}, {1, 1}, {1, 4}, {0, 4}, {0, 0}, {0, 0}, {0, 0}, {3, 0}, {3, 1}});
+    expect_triangulated_in_every_pose({{3, 1}, {1, 1}, {1, 1}, {1, 4}, {0, 4}, {0, 0}, {0, 0}, {0, 0}, {3, 0}, {3, 1}});
 }
 
 TEST(PolygonTriangles, LShapeCoversItsAreaOnce) {
@@ -211,8 +208,7 @@ TEST(PolygonTriangles, CombWithThinTeethCoversItsAreaOnce) { expect_triangulated
 
 TEST(PolygonTriangles, RingCutBySlitCoversItsAreaOnce) {
     // A square annulus with the slit from (0, 0) to (1, 1): 10 corners, 8 distinct.
-    expect_triangulated_in_every_pose(
-        {{0, 0}, {4, 0}, {4, 4}, {0, 4}, {0, 0}, {1, 1}, {1, 3}, {3, 3}, {3, 1}, {1, 1}});
+    expect_triangulated_in_every_pose({{0, 0}, {4, 0}, {4, 4}, {0, 4}, {0, 0}, {1, 1}, {1, 3}, {3, 3}, {3, 1}, {1, 1}});
     expect_triangulated_in_every_pose(ring_cut_by_slit(4, 2.0, 1.0));
 }
 
@@ -228,8 +224,24 @@ TEST(PolygonTriangles, SlitsAndCracksOfOtherShapesCoverTheirAreaOnce) {
     expect_triangulated_in_every_pose(
         {{1.6, 0}, {4, 0}, {4, 4}, {0, 4}, {0, 0}, {1.6, 0}, {1, 1}, {1, 3}, {3, 3}, {3, 1}, {1, 1}});
     // Two holes, each with its own slit.
-    expect_triangulated_in_every_pose({{0, 0}, {1.5, 0}, {1, 1}, {1, 2}, {2, 2}, {2, 1}, {1, 1}, {1.5, 0}, {4.5, 0},
-                                       {5, 1}, {4, 1}, {4, 2}, {5, 2}, {5, 1}, {4.5, 0}, {6, 0}, {6, 3}, {0, 3}});
+    expect_triangulated_in_every_pose({{0, 0},
+                                       {1.5, 0},
+                                       {1, 1},
+                                       {1, 2},
+                                       {2, 2},
+                                       {2, 1},
+                                       {1, 1},
+                                       {1.5, 0},
+                                       {4.5, 0},
+                                       {5, 1},
+                                       {4, 1},
+                                       {4, 2},
+                                       {5, 2},
+                                       {5, 1},
+                                       {4.5, 0},
+                                       {6, 0},
+                                       {6, 3},
+                                       {0, 3}});
     // A crack into a square, which has no area of its own.
     expect_triangulated_in_every_pose({{0, 0}, {3, 1}, {0, 0}, {4, 0}, {4, 4}, {0, 4}});
 }

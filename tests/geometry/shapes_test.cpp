@@ -3,9 +3,9 @@
 #include <cmath>
 #include <map>
 #include <numbers>
-#include <tuple>
 #include <set>
 #include <stdexcept>
+#include <tuple>
 #include <utility>
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -60,24 +60,28 @@ TEST(Shapes, DodecahedronHasTwentyCornersThirtySixFacetsAndReachesHalfAUnit) {
     EXPECT_TRUE(is_closed_and_consistently_wound(dodecahedron));
     expect_outward_clockwise_facets(dodecahedron);
     float largest = 0.0F;
-    for (const glm::vec3& p : dodecahedron.positions) largest = std::max({largest, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+    for (const glm::vec3& p : dodecahedron.positions)
+        largest = std::max({largest, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
     EXPECT_NEAR(largest, 0.5F, 1e-6F);
     // Twelve regular pentagons: each fan of three facets shares one normal, edge 1/phi^2.
     std::set<std::tuple<int, int, int>> planes;
     for (const raster::Facet& facet : dodecahedron.facets) {
-        planes.insert({std::lround(facet.normal.x * 1000), std::lround(facet.normal.y * 1000), std::lround(facet.normal.z * 1000)});
+        planes.insert({std::lround(facet.normal.x * 1000), std::lround(facet.normal.y * 1000),
+                       std::lround(facet.normal.z * 1000)});
     }
     EXPECT_EQ(planes.size(), 12U);
     const float phi = std::numbers::phi_v<float>;
     float shortest = 10.0F;
     for (std::size_t i = 0; i < 20; ++i) {
-        for (std::size_t j = i + 1; j < 20; ++j) shortest = std::min(shortest, glm::distance(dodecahedron.positions[i], dodecahedron.positions[j]));
+        for (std::size_t j = i + 1; j < 20; ++j)
+            shortest = std::min(shortest, glm::distance(dodecahedron.positions[i], dodecahedron.positions[j]));
     }
     EXPECT_NEAR(shortest, 1.0F / (phi * phi), 1e-5F);
 }
 
 TEST(Shapes, SphereLevelsHaveTheDiaryCountsOnTheUnitSphere) {
-    for (const auto& [level, facets, vertices] : {std::tuple{0, 8U, 6U}, {1, 32U, 18U}, {2, 128U, 66U}, {4, 2048U, 1026U}}) {
+    for (const auto& [level, facets, vertices] :
+         {std::tuple{0, 8U, 6U}, {1, 32U, 18U}, {2, 128U, 66U}, {4, 2048U, 1026U}}) {
         const Mesh sphere = raster::sphere(level);
         EXPECT_EQ(sphere.facets.size(), facets) << "level " << level;
         EXPECT_EQ(sphere.positions.size(), vertices) << "level " << level;
@@ -102,9 +106,8 @@ TEST(Shapes, TorusHasRingTimesTubeVerticesTwiceAsManyFacetsAndTrueNormals) {
         EXPECT_NEAR(glm::distance(p, centre), raster::kTorusTubeRadius, 1e-6F);
         EXPECT_NEAR(glm::length(glm::normalize(p - centre) - torus.normals[i]), 0.0F, 1e-5F);
     }
-    expect_outward_clockwise_facets(torus, [](glm::vec3 p) {
-        return raster::kTorusRingRadius * glm::normalize(glm::vec3(p.x, 0, p.z));
-    });
+    expect_outward_clockwise_facets(
+        torus, [](glm::vec3 p) { return raster::kTorusRingRadius * glm::normalize(glm::vec3(p.x, 0, p.z)); });
 }
 
 TEST(Shapes, TessellationOutsideTheDocumentedLimitsIsAClearError) {

@@ -3,8 +3,8 @@
 #include <optional>
 #include <gtest/gtest.h>
 
-using raster::FrameRange;
 using raster::frame_range_from_text;
+using raster::FrameRange;
 
 TEST(FrameRangeFromText, ReadsDotsOrColonBetweenTwoDecimalFrames) {
     EXPECT_EQ(frame_range_from_text("3..7"), (FrameRange{3, 7, 0, 0}));
@@ -28,8 +28,8 @@ TEST(FrameRangeFromText, RefusesABackwardRange) {
 }
 
 TEST(FrameRangeFromText, RefusesAnythingButTwoPlainDecimalNumbers) {
-    for (const char* text : {"", "5", "..", ":", "..5", "5..", "-1..3", "+1..3", "1..+3", " 1..3", "1..3 ", "1...3", "1..3..5",
-                             "1:3:5", "a..b", "0x1..2", "1.5..3", "1234567890..1234567891"}) {
+    for (const char* text : {"", "5", "..", ":", "..5", "5..", "-1..3", "+1..3", "1..+3", " 1..3", "1..3 ", "1...3",
+                             "1..3..5", "1:3:5", "a..b", "0x1..2", "1.5..3", "1234567890..1234567891"}) {
         EXPECT_EQ(frame_range_from_text(text), std::nullopt) << text;
     }
 }

@@ -82,7 +82,8 @@ TEST(HeldSignals, AHolderOnAnotherThreadWaitsUntilASignalThatCameHasBeenRaised) 
 }
 
 TEST(HeldSignals, AnIgnoredSignalStaysIgnored) {
-    struct sigaction ignore {}, before {};
+    struct sigaction ignore {
+    }, before{};
     ignore.sa_handler = SIG_IGN;
     sigemptyset(&ignore.sa_mask);
     ::sigaction(SIGUSR2, &ignore, &before);

@@ -11,9 +11,9 @@
 #include <cstdint>
 #include <cstring>
 #include <numbers>
+#include <span>
 #include <stdexcept>
 #include <string>
-#include <span>
 #include <utility>
 #include <vector>
 
@@ -54,14 +54,17 @@ const std::string kAsset = R"("asset": {"version": "2.0"})";
 TEST(HostileModels, ANodeChainThirtyThousandDeepIsRefusedBeforeAssimpRecursesIntoIt) {
     const ScratchDir dir;
     std::string nodes;
-    for (int i = 0; i < 30000; ++i) nodes += (i > 0 ? "," : "") + std::string(R"({"children": [)") + (i + 1 < 30000 ? std::to_string(i + 1) : "") + "]}";
+    for (int i = 0; i < 30000; ++i)
+        nodes +=
+            (i > 0 ? "," : "") + std::string(R"({"children": [)") + (i + 1 < 30000 ? std::to_string(i + 1) : "") + "]}";
     EXPECT_EQ(refusal(dir, "chain.gltf", "{" + kAsset + R"(, "scenes": [{"nodes": [0]}], "nodes": [)" + nodes + "]}"),
               "its nodes nest more than 256 deep");
 }
 
 TEST(HostileModels, JsonNestedTwoHundredThousandDeepIsRefusedBeforeAnyParserSeesIt) {
     const ScratchDir dir;
-    EXPECT_EQ(refusal(dir, "deep.gltf", "{" + kAsset + R"(, "extras": )" + repeated("[", 200000) + repeated("]", 200000) + "}"),
+    EXPECT_EQ(refusal(dir, "deep.gltf",
+                      "{" + kAsset + R"(, "extras": )" + repeated("[", 200000) + repeated("]", 200000) + "}"),
               "its JSON nests more than 64 deep");
 }
 
@@ -81,12 +84,15 @@ TEST(HostileModels, NodesReusedIntoAnExponentialGraphAreRefusedByTheirInstanceCo
 
 TEST(HostileModels, SparseAccessorsThatReachPastTheirBuffersOrClaimBillionsAreRefused) {
     const ScratchDir dir;
-    const std::string buffers = R"("buffers": [{"byteLength": 60, "uri": "data:application/octet-stream;base64,)" + std::string(80, 'A') +
-                                R"("}], "bufferViews": [{"buffer": 0, "byteLength": 48}, {"buffer": 0, "byteOffset": 48, "byteLength": 12}])";
-    const std::string past = "{" + kAsset + ", " + buffers + R"(, "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3",
+    const std::string buffers =
+        R"("buffers": [{"byteLength": 60, "uri": "data:application/octet-stream;base64,)" + std::string(80, 'A') +
+        R"("}], "bufferViews": [{"buffer": 0, "byteLength": 48}, {"buffer": 0, "byteOffset": 48, "byteLength": 12}])";
+    const std::string past = "{" + kAsset + ", " + buffers +
+                             R"(, "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3",
         "sparse": {"count": 2, "indices": {"bufferView": 1, "byteOffset": 1000, "componentType": 5123}, "values": {"bufferView": 0}}}]})";
     EXPECT_EQ(refusal(dir, "past.gltf", past), "accessor 0's sparse indices run past the end of buffer view 1");
-    const std::string billions = "{" + kAsset + ", " + buffers + R"(, "accessors": [{"componentType": 5126, "count": 1000000000, "type": "VEC3",
+    const std::string billions =
+        "{" + kAsset + ", " + buffers + R"(, "accessors": [{"componentType": 5126, "count": 1000000000, "type": "VEC3",
         "sparse": {"count": 1, "indices": {"bufferView": 1, "componentType": 5123}, "values": {"bufferView": 0}}}]})";
     EXPECT_EQ(refusal(dir, "billions.gltf", billions), "accessor 0 claims 1000000000 items with no data behind them");
 }
@@ -95,7 +101,8 @@ TEST(HostileModels, ASkinNamingJointsOrMatricesItLacksIsRefused) {
     const ScratchDir dir;
     EXPECT_EQ(refusal(dir, "joints.gltf", "{" + kAsset + R"(, "nodes": [{"skin": 0}], "skins": [{"joints": [0, 7]}]})"),
               "skin 0 names a joint that is no node");
-    const std::string matrices = "{" + kAsset + R"(, "buffers": [{"byteLength": 64, "uri": "data:application/octet-stream;base64,)" +
+    const std::string matrices = "{" + kAsset +
+                                 R"(, "buffers": [{"byteLength": 64, "uri": "data:application/octet-stream;base64,)" +
                                  std::string(88, 'A') + R"("}], "bufferViews": [{"buffer": 0, "byteLength": 64}],
         "accessors": [{"bufferView": 0, "componentType": 5126, "count": 1, "type": "MAT4"}],
         "nodes": [{"skin": 0}, {}], "skins": [{"joints": [0, 1], "inverseBindMatrices": 0}]})";
@@ -105,18 +112,20 @@ TEST(HostileModels, ASkinNamingJointsOrMatricesItLacksIsRefused) {
 TEST(HostileModels, AGlbWhoseJsonChunkClaimsFourGibibytesIsRefusedBeforeItIsAllocated) {
     const ScratchDir dir;
     const std::string json = "{" + kAsset + "}";
-    const std::string glb = "glTF" + little_endian(2) + little_endian(static_cast<std::uint32_t>(20 + json.size())) + little_endian(0xFFFFFFF0U) +
-                            "JSON" + json;
+    const std::string glb = "glTF" + little_endian(2) + little_endian(static_cast<std::uint32_t>(20 + json.size())) +
+                            little_endian(0xFFFFFFF0U) + "JSON" + json;
     EXPECT_EQ(refusal(dir, "huge.glb", glb), "has a chunk of 4294967280 bytes that runs past its end");
-    const std::string claims = "glTF" + little_endian(2) + little_endian(0xFFFFFFFFU) + little_endian(static_cast<std::uint32_t>(json.size())) + "JSON" + json;
+    const std::string claims = "glTF" + little_endian(2) + little_endian(0xFFFFFFFFU) +
+                               little_endian(static_cast<std::uint32_t>(json.size())) + "JSON" + json;
     EXPECT_EQ(refusal(dir, "claims.glb", claims), "claims 4294967295 bytes but holds " + std::to_string(claims.size()));
 }
 
 TEST(HostileModels, ABufferLongerThanItsFileIsRefused) {
     const ScratchDir dir;
     write_text(dir / "short.bin", std::string(12, '\0'));
-    EXPECT_EQ(refusal(dir, "short.gltf", "{" + kAsset + R"(, "buffers": [{"byteLength": 4000000000, "uri": "short.bin"}]})"),
-              "buffer 0 claims 4000000000 bytes, but only 12 are there");
+    EXPECT_EQ(
+        refusal(dir, "short.gltf", "{" + kAsset + R"(, "buffers": [{"byteLength": 4000000000, "uri": "short.bin"}]})"),
+        "buffer 0 claims 4000000000 bytes, but only 12 are there");
 }
 
 TEST(HostileModels, AFileOfAnotherFormatRenamedIsRefusedSayingWhatItLooksLike) {
@@ -126,8 +135,10 @@ TEST(HostileModels, AFileOfAnotherFormatRenamedIsRefusedSayingWhatItLooksLike) {
     EXPECT_EQ(refusal(dir, "off.gltf", off), "looks like an OFF model, not a glTF model");
     EXPECT_EQ(refusal(dir, "obj.glb", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), "is not a glTF binary model");
     EXPECT_EQ(refusal(dir, "pyramid.stl", test_support::ply_pyramid()), "looks like a PLY model, not an STL model");
-    EXPECT_EQ(refusal(dir, "solid.ply", test_support::stl_tetrahedron_ascii()), "looks like an ASCII STL model, not a PLY model");
-    EXPECT_EQ(refusal(dir, "squares.obj", test_support::gltf_two_squares()), "looks like JSON (a glTF model?), not an OBJ model");
+    EXPECT_EQ(refusal(dir, "solid.ply", test_support::stl_tetrahedron_ascii()),
+              "looks like an ASCII STL model, not a PLY model");
+    EXPECT_EQ(refusal(dir, "squares.obj", test_support::gltf_two_squares()),
+              "looks like JSON (a glTF model?), not an OBJ model");
     EXPECT_EQ(refusal(dir, "empty.glb", ""), "is empty, not a glTF binary model");
     // The right format still reads.
     EXPECT_EQ(refusal(dir, "pyramid.ply", test_support::ply_pyramid()), "");
@@ -137,8 +148,9 @@ TEST(HostileModels, AFileOfAnotherFormatRenamedIsRefusedSayingWhatItLooksLike) {
 TEST(HostileModels, ABinaryStlWhoseTriangleCountDoesNotMatchItsSizeIsRefused) {
     const ScratchDir dir;
     const std::string stl = std::string(80, 'x') + little_endian(1000000000) + std::string(50, '\0');
-    EXPECT_EQ(refusal(dir, "lies.stl", stl),
-              "is not an STL model: not 'solid' text, and its triangle count does not match its size as a binary STL's must");
+    EXPECT_EQ(
+        refusal(dir, "lies.stl", stl),
+        "is not an STL model: not 'solid' text, and its triangle count does not match its size as a binary STL's must");
 }
 
 TEST(HostileModels, APlyWithoutEndHeaderIsRefusedAtOnceNotReadForever) {
@@ -149,18 +161,27 @@ TEST(HostileModels, APlyWithoutEndHeaderIsRefusedAtOnceNotReadForever) {
 
 TEST(HostileModels, PlyCountsLargerThanTheBytesBehindThemAreRefusedBeforeAllocation) {
     const ScratchDir dir;
-    const std::string header = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
+    const std::string header =
+        "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
     const std::string vertices(36, '\0');
-    EXPECT_EQ(refusal(dir, "vertices.ply",
-                      "ply\nformat binary_little_endian 1.0\nelement vertex 1000000000\nproperty float x\nend_header\n" + std::string(12, '\0')),
-              "the PLY header declares 1000000000 'vertex' elements, more than the 12 bytes left");
-    EXPECT_EQ(refusal(dir, "list.ply", header + "element face 1\nproperty list uint int vertex_indices\nend_header\n" + vertices + little_endian(0x7FFFFFFF)),
+    EXPECT_EQ(
+        refusal(dir, "vertices.ply",
+                "ply\nformat binary_little_endian 1.0\nelement vertex 1000000000\nproperty float x\nend_header\n" +
+                    std::string(12, '\0')),
+        "the PLY header declares 1000000000 'vertex' elements, more than the 12 bytes left");
+    EXPECT_EQ(refusal(dir, "list.ply",
+                      header + "element face 1\nproperty list uint int vertex_indices\nend_header\n" + vertices +
+                          little_endian(0x7FFFFFFF)),
               "'face' item 1 has a list of 2147483647 entries, more than the bytes left can hold");
-    EXPECT_EQ(refusal(dir, "negative.ply", header + "element face 1\nproperty list int int vertex_indices\nend_header\n" + vertices + little_endian(0xFFFFFFFFU)),
+    EXPECT_EQ(refusal(dir, "negative.ply",
+                      header + "element face 1\nproperty list int int vertex_indices\nend_header\n" + vertices +
+                          little_endian(0xFFFFFFFFU)),
               "'face' item 1 has a list of negative length, more than the bytes left can hold");
-    EXPECT_EQ(refusal(dir, "ascii.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-                                        "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n200 0 1 2\n"),
-              "'face' item 1 has a list longer than its line");
+    EXPECT_EQ(
+        refusal(dir, "ascii.ply",
+                "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n200 0 1 2\n"),
+        "'face' item 1 has a list longer than its line");
 }
 
 TEST(HostileModels, FacesOfHundredsOfCornersAreReadWholeNotCutAtTwoHundredFiftySix) {
@@ -185,8 +206,11 @@ TEST(HostileModels, EmptyFilesAreRefusedWithoutANullPointerReachingAssimp) {
     // Under UndefinedBehaviorSanitizer, an empty file once handed assimp a null pointer to copy from.
     const ScratchDir dir;
     write_text(dir / "empty.bin", "");
-    const std::string gltf = "{" + kAsset + R"(, "buffers": [{"byteLength": 0, "uri": "empty.bin"}], "scenes": [{"nodes": [0]}], "nodes": [{}]})";
-    EXPECT_EQ(refusal(dir, "empty-buffer.gltf", gltf), "not a glTF 2.0, STL or PLY model raster can read (or one it finds broken)");
+    const std::string gltf =
+        "{" + kAsset +
+        R"(, "buffers": [{"byteLength": 0, "uri": "empty.bin"}], "scenes": [{"nodes": [0]}], "nodes": [{}]})";
+    EXPECT_EQ(refusal(dir, "empty-buffer.gltf", gltf),
+              "not a glTF 2.0, STL or PLY model raster can read (or one it finds broken)");
     EXPECT_EQ(refusal(dir, "empty.stl", ""), "is empty, not an STL model");
     EXPECT_EQ(refusal(dir, "empty.ply", ""), "is empty, not a PLY model");
 }
@@ -195,7 +219,9 @@ TEST(HostileModels, FilesAssimpThrowsOnLeaveNoStreamBehind) {
     // Read in this process, so that LeakSanitizer sees a stream assimp never closed.
     for (const auto& [format, text] : std::vector<std::pair<std::string, std::string>>{
              {"ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_header\n1\n"},
-             {"gltf", "{" + kAsset + R"(, "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}], "nodes": [{"mesh": 0}]})"}}) {
+             {"gltf",
+              "{" + kAsset +
+                  R"(, "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}], "nodes": [{"mesh": 0}]})"}}) {
         const std::span<const std::uint8_t> bytes(reinterpret_cast<const std::uint8_t*>(text.data()), text.size());
         EXPECT_THROW((void)raster::parse_scene_file(bytes, format), std::runtime_error) << format;
     }

@@ -16,7 +16,6 @@
 #include <string_view>
 #include <vector>
 
-
 using namespace std::string_view_literals;
 using raster::detail::begins_like_image;
 using raster::detail::format_name;
@@ -35,7 +34,8 @@ constexpr int kHeight = 7;
 Bytes test_pixels(int channels) {
     Bytes pixels;
     for (int y = 0; y < kHeight; ++y) {
-        for (int x = 0; x < kWidth * channels; ++x) pixels.push_back(static_cast<std::uint8_t>((x / (3 * channels)) * 40 + y * 7));
+        for (int x = 0; x < kWidth * channels; ++x)
+            pixels.push_back(static_cast<std::uint8_t>((x / (3 * channels)) * 40 + y * 7));
     }
     return pixels;
 }
@@ -81,13 +81,31 @@ Bytes extended_webp() {
 
 // An 18-byte TGA header of the given type, 24 bits per pixel, no image ID and no colour map.
 Bytes tga_header(std::uint8_t type, int width, int height) {
-    return {0, 0, type, 0, 0, 0, 0, 0, 0, 0, 0, 0, static_cast<std::uint8_t>(width), static_cast<std::uint8_t>(width >> 8),
-            static_cast<std::uint8_t>(height), static_cast<std::uint8_t>(height >> 8), 24, 0};
+    return {0,
+            0,
+            type,
+            0,
+            0,
+            0,
+            0,
+            0,
+            0,
+            0,
+            0,
+            0,
+            static_cast<std::uint8_t>(width),
+            static_cast<std::uint8_t>(width >> 8),
+            static_cast<std::uint8_t>(height),
+            static_cast<std::uint8_t>(height >> 8),
+            24,
+            0};
 }
 
 ImageHeader read(const Bytes& bytes) { return read_image_header(bytes); }
 
-Bytes cut(const Bytes& bytes, std::size_t size) { return {bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(size)}; }
+Bytes cut(const Bytes& bytes, std::size_t size) {
+    return {bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(size)};
+}
 
 // The reason read_image_header gives for rejecting the bytes, or "" when it reads them.
 std::string rejection(const Bytes& bytes) {
@@ -131,18 +149,18 @@ std::vector<Sample> samples() {
 // A progressive JPEG's marker sequence made by hand: an APP1 segment holding FF D9, a SOF2 frame of
 // 48x32, and three scans whose data holds a stuffed zero, a restart marker and fill bytes.
 Bytes progressive_jpeg() {
-    return {0xFF, 0xD8,                                                        // SOI
-            0xFF, 0xE1, 0x00, 0x08, 'E', 'x', 0xFF, 0xD9, 0x00, 0x00,          // APP1 whose payload looks like EOI
+    return {0xFF, 0xD8,                                                  // SOI
+            0xFF, 0xE1, 0x00, 0x08, 'E',  'x',  0xFF, 0xD9, 0x00, 0x00,  // APP1 whose payload looks like EOI
             0xFF, 0xC2, 0x00, 0x0B, 0x08, 0x00, 0x20, 0x00, 0x30, 0x01, 0x01, 0x11, 0x00,  // SOF2
-            0xFF, 0xC4, 0x00, 0x03, 0x00,                                      // DHT
-            0xFF, 0xDA, 0x00, 0x08, 0x01, 0x01, 0x00, 0x00, 0x00, 0x00,        // SOS: DC scan
-            0x12, 0x34, 0xFF, 0x00, 0x56, 0xFF, 0xD3, 0x78,                    // data, stuffed zero, RST3
-            0xFF, 0xFF, 0xC4, 0x00, 0x03, 0x10,                                // fill byte, then DHT
-            0xFF, 0xDA, 0x00, 0x08, 0x01, 0x01, 0x00, 0x01, 0x3F, 0x00,        // SOS: AC scan
-            0xAB, 0xFF, 0x00, 0xCD,                                            // data
-            0xFF, 0xDA, 0x00, 0x08, 0x01, 0x01, 0x00, 0x01, 0x3F, 0x10,        // SOS: refinement scan
-            0xEF, 0x01,                                                        // data
-            0xFF, 0xD9};                                                       // EOI
+            0xFF, 0xC4, 0x00, 0x03, 0x00,                                                  // DHT
+            0xFF, 0xDA, 0x00, 0x08, 0x01, 0x01, 0x00, 0x00, 0x00, 0x00,                    // SOS: DC scan
+            0x12, 0x34, 0xFF, 0x00, 0x56, 0xFF, 0xD3, 0x78,                                // data, stuffed zero, RST3
+            0xFF, 0xFF, 0xC4, 0x00, 0x03, 0x10,                                            // fill byte, then DHT
+            0xFF, 0xDA, 0x00, 0x08, 0x01, 0x01, 0x00, 0x01, 0x3F, 0x00,                    // SOS: AC scan
+            0xAB, 0xFF, 0x00, 0xCD,                                                        // data
+            0xFF, 0xDA, 0x00, 0x08, 0x01, 0x01, 0x00, 0x01, 0x3F, 0x10,                    // SOS: refinement scan
+            0xEF, 0x01,                                                                    // data
+            0xFF, 0xD9};                                                                   // EOI
 }
 
 }  // namespace
@@ -223,15 +241,15 @@ TEST(ImageHeader, TgaClaiming4000SquaredWithNoPixelsIsTruncatedAtOnce) {
 
 TEST(ImageHeader, RleTgaIsWholeOnlyWhenItsPacketsCoverEveryPixel) {
     Bytes file = tga_header(10, 4, 2);
-    file.insert(file.end(), {0x83, 9, 9, 9});                                  // a run of four
+    file.insert(file.end(), {0x83, 9, 9, 9});                                // a run of four
     file.insert(file.end(), {0x03, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12});  // four literal pixels
     EXPECT_FALSE(read(file).truncated);
     Bytes trailing = file;
     trailing.insert(trailing.end(), {0, 0, 0, 0});
     EXPECT_FALSE(read(trailing).truncated);
     EXPECT_TRUE(read(cut(file, file.size() - 1)).truncated);  // last literal pixel short
-    EXPECT_TRUE(read(cut(file, 22)).truncated);                // second packet missing
-    EXPECT_TRUE(read(cut(file, 20)).truncated);                // run pixel short
+    EXPECT_TRUE(read(cut(file, 22)).truncated);               // second packet missing
+    EXPECT_TRUE(read(cut(file, 20)).truncated);               // run pixel short
 }
 
 TEST(ImageHeader, ReadsThePngSizeOf65535SquaredFromAHeaderAlone) {
@@ -349,7 +367,7 @@ TEST(ImageHeader, DoesNotBeginLikeImageForOtherBytes) {
     EXPECT_FALSE(begins_like_image(bytes("8BPS\x00\x01"sv)));
     EXPECT_FALSE(begins_like_image(bytes("this is plainly not an image, just some text")));
     EXPECT_FALSE(begins_like_image(Bytes(32, 0)));
-    EXPECT_FALSE(begins_like_image(cut(png(), 4)));     // a signature cut short
+    EXPECT_FALSE(begins_like_image(cut(png(), 4)));  // a signature cut short
     EXPECT_FALSE(begins_like_image(bytes("BM and then text")));
     Bytes mapped_without_map = tga_header(1, 4, 4);  // colour-mapped type but no colour map
     EXPECT_FALSE(begins_like_image(mapped_without_map));

@@ -1,10 +1,10 @@
 // Pictures leave as PNG or WebP, opaque or on a transparent background, and read back exactly.
-#include <raster/render/model_scene.hpp>
+#include <raster/geometry/shapes.hpp>
 #include <raster/io/obj_file.hpp>
 #include <raster/io/png.hpp>
-#include <raster/render/scene.hpp>
-#include <raster/geometry/shapes.hpp>
 #include <raster/io/webp.hpp>
+#include <raster/render/model_scene.hpp>
+#include <raster/render/scene.hpp>
 
 #include "support/model_files.hpp"
 #include "support/scratch.hpp"
@@ -21,7 +21,9 @@ Framebuffer gradient(int width, int height) {
     Framebuffer image(width, height);
     for (int y = 0; y < height; ++y) {
         for (int x = 0; x < width; ++x) {
-            image.set_pixel(x, y, {static_cast<std::uint8_t>(40 * x), static_cast<std::uint8_t>(70 * y), static_cast<std::uint8_t>(x * y + 5)});
+            image.set_pixel(x, y,
+                            {static_cast<std::uint8_t>(40 * x), static_cast<std::uint8_t>(70 * y),
+                             static_cast<std::uint8_t>(x * y + 5)});
         }
     }
     return image;
@@ -36,7 +38,8 @@ std::vector<std::uint8_t> holes(int width, int height) {
 }
 
 void write_bytes(const std::filesystem::path& path, const std::vector<std::uint8_t>& bytes) {
-    std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+    std::ofstream(path, std::ios::binary)
+        .write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
 }
 
 // Where alpha is 0 a pixel's colour is not kept, so pictures are compared where it is not.
@@ -108,8 +111,12 @@ TEST(WebpAlpha, TransparentAnimationsTakeTheAnimPathAndKeepAlphaInEveryFrame) {
 }
 
 TEST(Coverage, DepthIsKeptForOneConvexMeshOnlyWhenAskedAndItsCoverageIsWhatWasDrawn) {
-    raster::Scene scene{raster::OrthoCamera::look_at(24, 18, {2.0F, 1.5F, -3.0F}, {0.0F, 0.0F, 0.0F}, {0.0F, 1.0F, 0.0F}), {10, 20, 30},
-                        {}, {}, {}};
+    raster::Scene scene{
+        raster::OrthoCamera::look_at(24, 18, {2.0F, 1.5F, -3.0F}, {0.0F, 0.0F, 0.0F}, {0.0F, 1.0F, 0.0F}),
+        {10, 20, 30},
+        {},
+        {},
+        {}};
     scene.objects.push_back({std::make_shared<const raster::Mesh>(raster::cube_mesh()), glm::mat4(1.0F),
                              raster::IntensityMaterial::matte({200, 100, 50}, 1.0F)});
     Framebuffer image(24, 18);

@@ -6,10 +6,10 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
-#include <fcntl.h>
-#include <sys/inotify.h>
 #include <string>
 #include <utility>
+#include <fcntl.h>
+#include <sys/inotify.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -17,7 +17,9 @@ using test_support::ScratchDir;
 
 namespace {
 
-bool starts_with_abc(std::span<const std::uint8_t> head) { return head.size() >= 3 && head[0] == 'a' && head[1] == 'b' && head[2] == 'c'; }
+bool starts_with_abc(std::span<const std::uint8_t> head) {
+    return head.size() >= 3 && head[0] == 'a' && head[1] == 'b' && head[2] == 'c';
+}
 
 raster::InputRules rules(std::uintmax_t max_bytes = 1 << 20) {
     raster::InputRules r;
@@ -114,7 +116,8 @@ TEST(InputFile, LinesAreVisitedWithTheirNumbersAndALongLineIsRefusedByNumber) {
     test_support::write_text(dir / "lines", "abc\n\nthird\r\nfourth\rsixteen-letters!\nlast");
     raster::InputFile file(dir / "lines", rules());
     std::vector<std::pair<std::string, std::size_t>> seen;
-    raster::for_each_line(file, "lines", 16, [&](std::string_view line, std::size_t number) { seen.emplace_back(line, number); });
+    raster::for_each_line(file, "lines", 16,
+                          [&](std::string_view line, std::size_t number) { seen.emplace_back(line, number); });
     EXPECT_EQ(seen, (std::vector<std::pair<std::string, std::size_t>>{
                         {"abc", 1}, {"", 2}, {"third", 3}, {"fourth", 4}, {"sixteen-letters!", 5}, {"last", 6}}));
     // The same text in memory, and a "\r\n" split between two reads of the file, end lines alike.
@@ -125,7 +128,8 @@ TEST(InputFile, LinesAreVisitedWithTheirNumbersAndALongLineIsRefusedByNumber) {
     test_support::write_text(dir / "split", "abc" + std::string((1 << 16) - 4, 'x') + "\r\nnext\n");
     raster::InputFile split(dir / "split", rules());
     std::vector<std::size_t> lengths;
-    raster::for_each_line(split, "split", 1 << 20, [&](std::string_view line, std::size_t) { lengths.push_back(line.size()); });
+    raster::for_each_line(split, "split", 1 << 20,
+                          [&](std::string_view line, std::size_t) { lengths.push_back(line.size()); });
     EXPECT_EQ(lengths, (std::vector<std::size_t>{(1 << 16) - 1, 4}));
     // A line longer than the cap, spanning many read blocks, is refused by its number.
     test_support::write_text(dir / "long", "abc\n" + std::string(300000, 'x') + "\nend\n");
@@ -147,18 +151,19 @@ TEST(InputFile, PrintableEscapesControlBytesAndKeepsUtf8) {
 
 TEST(InputFile, PrintableEscapesC1ControlsAndMalformedUtf8ByteByByte) {
     const std::pair<std::string, std::string> cases[] = {
-        {"\xc2\x9b" "31m", "\\xc2\\x9b31m"},                           // CSI, U+009B
-        {"\xc2\x9d" "0;x\xc2\x9c", "\\xc2\\x9d0;x\\xc2\\x9c"},              // OSC ... ST
-        {"\xc2\x80\xc2\x9f\xc2\xa0", "\\xc2\\x80\\xc2\\x9f\xc2\xa0"},     // C1's ends; U+00A0 is kept
-        {"a\x80" "b", "a\\x80b"},                                      // a stray continuation byte
-        {"\xc0\xaf", "\\xc0\\xaf"},                                     // an overlong '/'
-        {"\xe0\x80\xaf", "\\xe0\\x80\\xaf"},                             // an overlong '/' in three bytes
-        {"\xed\xa0\x80", "\\xed\\xa0\\x80"},                             // a surrogate, U+D800
-        {"\xf4\x90\x80\x80", "\\xf4\\x90\\x80\\x80"},                     // past U+10FFFF
-        {"\xf5\xfe\xff", "\\xf5\\xfe\\xff"},                             // bytes UTF-8 never uses
-        {"\xe2\x82" "A", "\\xe2\\x82A"},                                 // a character cut short
+        {"\xc2\23331m", "\\xc2\\x9b31m"},                              // CSI, U+009B
+        {"\xc2\2350;x\xc2\x9c", "\\xc2\\x9d0;x\\xc2\\x9c"},            // OSC ... ST
+        {"\xc2\x80\xc2\x9f\xc2\xa0", "\\xc2\\x80\\xc2\\x9f\xc2\xa0"},  // C1's ends; U+00A0 is kept
+        {"a\200b", "a\\x80b"},                                         // a stray continuation byte
+        {"\xc0\xaf", "\\xc0\\xaf"},                                    // an overlong '/'
+        {"\xe0\x80\xaf", "\\xe0\\x80\\xaf"},                           // an overlong '/' in three bytes
+        {"\xed\xa0\x80", "\\xed\\xa0\\x80"},                           // a surrogate, U+D800
+        {"\xf4\x90\x80\x80", "\\xf4\\x90\\x80\\x80"},                  // past U+10FFFF
+        {"\xf5\xfe\xff", "\\xf5\\xfe\\xff"},                           // bytes UTF-8 never uses
+        {"\xe2\202A", "\\xe2\\x82A"},                                  // a character cut short
         {"caf\xc3", "caf\\xc3"},                                       // cut short at the end
-        {"\xe2\x82\xac \xf0\x9f\x98\x80 \xe4\xb8\xad", "\xe2\x82\xac \xf0\x9f\x98\x80 \xe4\xb8\xad"},  // euro, emoji, CJK kept
+        {"\xe2\x82\xac \xf0\x9f\x98\x80 \xe4\xb8\xad",
+         "\xe2\x82\xac \xf0\x9f\x98\x80 \xe4\xb8\xad"},  // euro, emoji, CJK kept
     };
     for (const auto& [text, shown] : cases) EXPECT_EQ(raster::printable(text), shown) << raster::printable(text);
     // The cut falls between whole characters, a lone bad byte counting as one.
@@ -179,7 +184,8 @@ TEST(InputFile, NothingIsOpenedBeforeItsKindIsCheckedInsideAConfinementOrNot) {
     const auto opens = [&] {
         char buffer[4096];
         int count = 0;
-        for (::ssize_t got; (got = ::read(events, buffer, sizeof buffer)) > 0;) count += static_cast<int>(got / sizeof(inotify_event));
+        for (::ssize_t got; (got = ::read(events, buffer, sizeof buffer)) > 0;)
+            count += static_cast<int>(got / sizeof(inotify_event));
         return count;
     };
     const int located = ::open((dir / "jail" / "pipe").c_str(), O_PATH | O_CLOEXEC);

@@ -45,7 +45,9 @@ raster::Framebuffer noise(int width, int height) {
     std::mt19937 random(7);
     for (int y = 0; y < height; ++y) {
         for (int x = 0; x < width; ++x) {
-            image.set_pixel(x, y, {static_cast<std::uint8_t>(random()), static_cast<std::uint8_t>(random()), static_cast<std::uint8_t>(random())});
+            image.set_pixel(x, y,
+                            {static_cast<std::uint8_t>(random()), static_cast<std::uint8_t>(random()),
+                             static_cast<std::uint8_t>(random())});
         }
     }
     return image;
@@ -54,8 +56,12 @@ raster::Framebuffer noise(int width, int height) {
 }  // namespace
 
 TEST(KittyGraphics, Base64FollowsRfc4648WithPadding) {
-    const std::pair<const char*, const char*> vectors[] = {{"", ""},         {"f", "Zg=="},         {"fo", "Zm8="},
-                                                           {"foo", "Zm9v"}, {"foob", "Zm9vYg=="}, {"fooba", "Zm9vYmE="},
+    const std::pair<const char*, const char*> vectors[] = {{"", ""},
+                                                           {"f", "Zg=="},
+                                                           {"fo", "Zm8="},
+                                                           {"foo", "Zm9v"},
+                                                           {"foob", "Zm9vYg=="},
+                                                           {"fooba", "Zm9vYmE="},
                                                            {"foobar", "Zm9vYmFy"}};
     for (const auto& [plain, encoded] : vectors) EXPECT_EQ(raster::base64(bytes_of(plain)), encoded) << plain;
     const std::vector<std::uint8_t> all = {0x00, 0xFB, 0xFF, 0x3E, 0x3F};
@@ -86,13 +92,15 @@ TEST(KittyGraphics, TransparentPicturesKeepTheirAlpha) {
     raster::Framebuffer image(3, 2);
     image.set_pixel(1, 1, {9, 8, 7});
     const std::vector<std::uint8_t> alpha = {0, 255, 0, 128, 255, 1};
-    const raster::DecodedPng back = raster::decode_png(payload_of(raster::kitty_display(raster::encode_png(image, alpha), std::nullopt)), 100);
+    const raster::DecodedPng back =
+        raster::decode_png(payload_of(raster::kitty_display(raster::encode_png(image, alpha), std::nullopt)), 100);
     EXPECT_EQ(back.image.pixel(1, 1), (raster::Rgb{9, 8, 7}));
     EXPECT_EQ(back.alpha, alpha);
 }
 
 TEST(KittyGraphics, ChunksSplitAtExactly4096Base64Bytes) {
-    for (const auto& [size, count] : {std::pair<std::size_t, std::size_t>{1, 1}, {3072, 1}, {3073, 2}, {6144, 2}, {6145, 3}}) {
+    for (const auto& [size, count] :
+         {std::pair<std::size_t, std::size_t>{1, 1}, {3072, 1}, {3073, 2}, {6144, 2}, {6145, 3}}) {
         const std::vector<std::uint8_t> bytes(size, 0xA5);
         std::size_t chunks = 0;
         EXPECT_EQ(payload_of(raster::kitty_display(bytes, std::nullopt), &chunks), bytes) << size;
@@ -106,14 +114,16 @@ TEST(KittyGraphics, DisplayCellsGoInTheFirstChunkOnly) {
     ASSERT_GT(chunks.size(), 1U);
     EXPECT_EQ(chunks[0].keys.at("c"), "30");
     EXPECT_EQ(chunks[0].keys.at("r"), "12");
-    for (std::size_t i = 1; i < chunks.size(); ++i) EXPECT_EQ(chunks[i].keys.count("c") + chunks[i].keys.count("r"), 0U);
+    for (std::size_t i = 1; i < chunks.size(); ++i)
+        EXPECT_EQ(chunks[i].keys.count("c") + chunks[i].keys.count("r"), 0U);
 }
 
 TEST(KittyGraphics, PicturesThatFitOrAnUnknownPixelSizeAreShownAtTheirOwnSize) {
     const TerminalWindow known{80, 24, 800, 480};  // cells of 10 x 20 pixels
     EXPECT_EQ(raster::display_cells(320, 200, known), std::nullopt);
     EXPECT_EQ(raster::display_cells(800, 440, known), std::nullopt) << "exactly 80 columns and 22 rows";
-    for (const TerminalWindow unknown : {TerminalWindow{80, 24, 0, 0}, TerminalWindow{80, 24, 800, 0}, TerminalWindow{0, 0, 800, 480}, TerminalWindow{}}) {
+    for (const TerminalWindow unknown : {TerminalWindow{80, 24, 0, 0}, TerminalWindow{80, 24, 800, 0},
+                                         TerminalWindow{0, 0, 800, 480}, TerminalWindow{}}) {
         EXPECT_EQ(raster::display_cells(4000, 3000, unknown), std::nullopt);
     }
 }
@@ -133,7 +143,8 @@ TEST(KittyGraphics, AWidePictureTakesTheWholeWidthAndATallOneTheRowsLeft) {
         EXPECT_LE(cells->columns, 80);
         EXPECT_LE(cells->rows, 22);
         EXPECT_TRUE(cells->columns == 80 || cells->rows == 22) << "one side meets the window";
-        const double shown = cells->columns * 10.0 / (cells->rows * 20.0), picture = static_cast<double>(width) / height;
+        const double shown = cells->columns * 10.0 / (cells->rows * 20.0),
+                     picture = static_cast<double>(width) / height;
         EXPECT_NEAR(cells->columns * 10.0, cells->rows * 20.0 * picture, 20.0 * picture / 2 + 10.0 / 2 + 1e-9) << shown;
     }
 }
@@ -159,24 +170,28 @@ TEST(KittyGraphics, TheQueryAsksForOneTinyPictureThenTheDeviceAttributes) {
 
 TEST(KittyGraphics, AnOkBeforeTheDeviceAttributesMeansSupport) {
     EXPECT_EQ(raster::read_kitty_answer("\x1b_Gi=77;OK\x1b\\\x1b[?62;22;52c", 77), KittyAnswer::supported);
-    EXPECT_EQ(raster::read_kitty_answer("x\x1b_Gi=77,p=1;OK\x1b\\abc\x1b[?1;2c", 77), KittyAnswer::supported) << "keys typed meanwhile";
+    EXPECT_EQ(raster::read_kitty_answer("x\x1b_Gi=77,p=1;OK\x1b\\abc\x1b[?1;2c", 77), KittyAnswer::supported)
+        << "keys typed meanwhile";
 }
 
 TEST(KittyGraphics, DeviceAttributesAloneOrFirstMeanNoSupport) {
     EXPECT_EQ(raster::read_kitty_answer("\x1b[?62;22c", 77), KittyAnswer::unsupported);
     EXPECT_EQ(raster::read_kitty_answer("\x1b[?6c\x1b_Gi=77;OK\x1b\\", 77), KittyAnswer::unsupported) << "too late";
-    EXPECT_EQ(raster::read_kitty_answer("\x1b_Gi=78;OK\x1b\\\x1b[?62c", 77), KittyAnswer::unsupported) << "another program's id";
+    EXPECT_EQ(raster::read_kitty_answer("\x1b_Gi=78;OK\x1b\\\x1b[?62c", 77), KittyAnswer::unsupported)
+        << "another program's id";
 }
 
 TEST(KittyGraphics, AnErrorReplyIsARefusal) {
     EXPECT_EQ(raster::read_kitty_answer("\x1b_Gi=77;ENOTSUPPORTED:no\x1b\\\x1b[?62c", 77), KittyAnswer::refused);
-    EXPECT_EQ(raster::read_kitty_answer("\x1b_Gi=77;EINVAL\x1b\\", 77), KittyAnswer::incomplete) << "the attributes still to come";
+    EXPECT_EQ(raster::read_kitty_answer("\x1b_Gi=77;EINVAL\x1b\\", 77), KittyAnswer::incomplete)
+        << "the attributes still to come";
 }
 
 TEST(KittyGraphics, GarbageOrAPartialAnswerIsNotSupport) {
-    for (const std::string_view answer : {std::string_view(""), std::string_view("garbage"), std::string_view("\x1b_Gi=77;OK"),
-                                          std::string_view("\x1b_Gi=77;OK\x1b\\"), std::string_view("\x1b_Gi=77;OK\x1b\\\x1b[?62;"),
-                                          std::string_view("\x1b_Gi=77;OK\x1b\\\x1b[62c"), std::string_view("\x1b[?6x2c")}) {
+    for (const std::string_view answer :
+         {std::string_view(""), std::string_view("garbage"), std::string_view("\x1b_Gi=77;OK"),
+          std::string_view("\x1b_Gi=77;OK\x1b\\"), std::string_view("\x1b_Gi=77;OK\x1b\\\x1b[?62;"),
+          std::string_view("\x1b_Gi=77;OK\x1b\\\x1b[62c"), std::string_view("\x1b[?6x2c")}) {
         EXPECT_EQ(raster::read_kitty_answer(answer, 77), KittyAnswer::incomplete) << answer.size();
     }
     EXPECT_EQ(raster::read_kitty_answer("\x1b_Gi=x77;OK\x1b\\\x1b[?62c", 77), KittyAnswer::unsupported);

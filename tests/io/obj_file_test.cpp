@@ -44,7 +44,8 @@ TEST(ObjFile, QuadsAreSplitAndCounterClockwiseFacesTurnTowardTheirViewer) {
     // Mirrored into raster's left-handed world that viewer stands at -Z: the normals point there.
     for (const raster::Facet& facet : mesh.facets) {
         EXPECT_EQ(facet.normal, glm::vec3(0.0F, 0.0F, -1.0F));
-        const glm::vec3 a = mesh.positions[facet.corners[0]], b = mesh.positions[facet.corners[1]], c = mesh.positions[facet.corners[2]];
+        const glm::vec3 a = mesh.positions[facet.corners[0]], b = mesh.positions[facet.corners[1]],
+                        c = mesh.positions[facet.corners[2]];
         EXPECT_EQ(raster::facet_normal(a, b, c), facet.normal);  // clockwise from outside, raster's rule
     }
     EXPECT_EQ(raster::triangle_count(model), 2U);
@@ -53,7 +54,8 @@ TEST(ObjFile, QuadsAreSplitAndCounterClockwiseFacesTurnTowardTheirViewer) {
 
 TEST(ObjFile, MissingNormalsAreSmoothBelowTheCreaseAngleAndCreasedAbove) {
     // Two triangles folded by 20 degrees along the shared edge 1-2.
-    const std::string fold = "v 0 0 0\nv 0 1 0\nv 1 0 0\nv -1 0 " + std::to_string(std::tan(0.349066)) + "\nf 1 3 2\nf 1 2 4\n";
+    const std::string fold =
+        "v 0 0 0\nv 0 1 0\nv 1 0 0\nv -1 0 " + std::to_string(std::tan(0.349066)) + "\nf 1 3 2\nf 1 2 4\n";
     raster::ObjOptions smooth;
     smooth.crease_degrees = 30.0;
     const Model smoothed = parse_obj(fold, "", smooth);
@@ -91,18 +93,23 @@ TEST(ObjFile, EachMaterialIsAPartWithItsColours) {
 TEST(ObjFile, BadIndicesAndPointsAreOneLineErrors) {
     const std::string triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
     EXPECT_EQ(error_of(triangle + "f 1 2 9\n"), "<memory>:4: face names vertex 9, but 3 are defined before it");
-    EXPECT_EQ(error_of(triangle + "f 1 2 3 9\n"), "<memory>:4: face names vertex 9, but 3 are defined before it");  // a quad too
+    EXPECT_EQ(error_of(triangle + "f 1 2 3 9\n"),
+              "<memory>:4: face names vertex 9, but 3 are defined before it");  // a quad too
     EXPECT_EQ(error_of(triangle + "f 1 2 -7\n"), "<memory>:4: face names vertex -7, but 3 are defined before it");
-    EXPECT_EQ(error_of("v 0 0 0\nf 1 2 3\nv 1 0 0\nv 0 1 0\n"), "<memory>:2: face names vertex 2, but 1 is defined before it");
-    EXPECT_EQ(error_of(triangle + "vt 0 0\nf 1/1 2/5 3/1\n"), "<memory>:5: face names texture coordinate 5, but 1 is defined before it");
-    EXPECT_EQ(error_of(triangle + "f 1//1 2//1 3//1\n"), "<memory>:4: face names normal 1, but 0 are defined before it");
+    EXPECT_EQ(error_of("v 0 0 0\nf 1 2 3\nv 1 0 0\nv 0 1 0\n"),
+              "<memory>:2: face names vertex 2, but 1 is defined before it");
+    EXPECT_EQ(error_of(triangle + "vt 0 0\nf 1/1 2/5 3/1\n"),
+              "<memory>:5: face names texture coordinate 5, but 1 is defined before it");
+    EXPECT_EQ(error_of(triangle + "f 1//1 2//1 3//1\n"),
+              "<memory>:4: face names normal 1, but 0 are defined before it");
     EXPECT_EQ(error_of(triangle + "f 0 1 2\n"), "<memory>:4: vertex index 0: OBJ counts from 1");
     EXPECT_EQ(error_of(triangle + "f 1 x 3\n"), "<memory>:4: 'x' is not a vertex index");
     std::string many = triangle + "f";
     for (std::size_t i = 0; i <= raster::kMaxFaceCorners; ++i) many += " " + std::to_string(i % 3 + 1);
     EXPECT_EQ(error_of(many + "\n"), "<memory>:4: a face of more than 1024 corners");
-    EXPECT_EQ(error_of("v 0 0 0\nv 1 0 0\nv 0 -1e39 0\nf 1 2 3\n"),
-              "<memory>:4: the face uses vertex 3, but line 3 gives it '-1e39', which is beyond the largest coordinate raster stores");
+    EXPECT_EQ(
+        error_of("v 0 0 0\nv 1 0 0\nv 0 -1e39 0\nf 1 2 3\n"),
+        "<memory>:4: the face uses vertex 3, but line 3 gives it '-1e39', which is beyond the largest coordinate raster stores");
     EXPECT_EQ(error_of(""), "<memory>: no faces to draw");
     EXPECT_EQ(error_of(triangle), "<memory>: no faces to draw");
     EXPECT_EQ(error_of("v 0 0 0\nv 0 0 0\nv 0 0 0\nf 1 2 3\n"), "<memory>: every face has no area");
@@ -138,8 +145,9 @@ TEST(ObjFile, FacesWithFewerThanThreeCornersAreSkippedWithAWarning) {
 }
 
 TEST(ObjFile, MalformedTextNeverCrashes) {
-    for (const char* text : {"v 1 abc 3\nf 1 1 1\n", "f\n", "f / / /\n", "v\nv\nv\nf 1 2 3\n", "vt 1e999 -1e999\n", "usemtl\nmtllib\n",
-                             "f 0 0 0\n", "v 1 2 3\nf -1 -1 -1\n", "f 2147483647 -2147483648 1\n", "\x00\xff\xfe garbage\n"}) {
+    for (const char* text :
+         {"v 1 abc 3\nf 1 1 1\n", "f\n", "f / / /\n", "v\nv\nv\nf 1 2 3\n", "vt 1e999 -1e999\n", "usemtl\nmtllib\n",
+          "f 0 0 0\n", "v 1 2 3\nf -1 -1 -1\n", "f 2147483647 -2147483648 1\n", "\x00\xff\xfe garbage\n"}) {
         (void)error_of(text, "newmtl\nKd x y z\nNs nan\nmap_Kd\n");
     }
 }
@@ -148,7 +156,8 @@ TEST(ObjFile, TexturesResolveBesideTheMtlEvenWithSpacesAndNonAsciiNames) {
     const test_support::ScratchDir dir;
     const std::filesystem::path folder = dir / "mödel dir";
     std::filesystem::create_directories(folder / "maps");
-    test_support::write_png(folder / "maps" / "wood grain é.png", test_support::checkerboard(2, 4, {200, 100, 50}, {20, 10, 5}));
+    test_support::write_png(folder / "maps" / "wood grain é.png",
+                            test_support::checkerboard(2, 4, {200, 100, 50}, {20, 10, 5}));
     test_support::write_text(folder / "box.mtl", "newmtl wood\nKd 1 1 1\nmap_Kd maps/wood grain é.png\n");
     test_support::write_text(folder / "bóx.obj", test_support::textured_cube_obj("box.mtl", "wood"));
     const Model model = raster::read_obj(folder / "bóx.obj");
@@ -233,7 +242,8 @@ void expect_tiles(const std::vector<glm::dvec2>& outline, const std::string& nam
     std::vector<std::array<glm::dvec2, 3>> triangles;
     for (const raster::Facet& facet : mesh.facets) {
         std::array<glm::dvec2, 3> t;
-        for (int k = 0; k < 3; ++k) t[static_cast<std::size_t>(k)] = glm::dvec2(mesh.positions[facet.corners[static_cast<std::size_t>(k)]]);
+        for (int k = 0; k < 3; ++k)
+            t[static_cast<std::size_t>(k)] = glm::dvec2(mesh.positions[facet.corners[static_cast<std::size_t>(k)]]);
         area += std::abs(shoelace({t[0], t[1], t[2]}));
         triangles.push_back(t);
     }
@@ -247,7 +257,8 @@ void expect_tiles(const std::vector<glm::dvec2>& outline, const std::string& nam
             const glm::dvec2 p = low + (high - low) * glm::dvec2((i + 0.5113) / 97.0, (j + 0.4871) / 89.0);
             int covered = 0;
             for (const auto& t : triangles) {
-                const double d0 = shoelace({t[0], t[1], p}), d1 = shoelace({t[1], t[2], p}), d2 = shoelace({t[2], t[0], p});
+                const double d0 = shoelace({t[0], t[1], p}), d1 = shoelace({t[1], t[2], p}),
+                             d2 = shoelace({t[2], t[0], p});
                 if ((d0 >= 0 && d1 >= 0 && d2 >= 0) || (d0 <= 0 && d1 <= 0 && d2 <= 0)) ++covered;
             }
             if (covered != (inside(outline, p) ? 1 : 0)) ++wrong;
@@ -291,27 +302,33 @@ TEST(ObjFile, NonFiniteCoordinatesAFaceUsesAreRefusedWithTheirLine) {
               "<memory>:4: the face uses vertex 1, but line 1 gives it 'nan', which is not a finite number");
     EXPECT_EQ(error_of("v 0 0 0\nv inf 0 0\nv 0 1 0\n" + face),
               "<memory>:4: the face uses vertex 2, but line 2 gives it 'inf', which is not a finite number");
-    EXPECT_EQ(error_of("v 0 0 0\nv 1 0 0\nv 0 1e39 0\n" + face),
-              "<memory>:4: the face uses vertex 3, but line 3 gives it '1e39', which is beyond the largest coordinate raster stores");
+    EXPECT_EQ(
+        error_of("v 0 0 0\nv 1 0 0\nv 0 1e39 0\n" + face),
+        "<memory>:4: the face uses vertex 3, but line 3 gives it '1e39', which is beyond the largest coordinate raster stores");
     EXPECT_EQ(error_of("v 0 0 0\nv 1 0 0\nv 0 1 zero\n" + face),
               "<memory>:4: the face uses vertex 3, but line 3 gives it 'zero', which is not a number");
     EXPECT_EQ(error_of("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 -nan\nf 1//1 2//1 3//1\n"),
               "<memory>:5: the face uses normal 1, but line 4 gives it '-nan', which is not a finite number");
-    EXPECT_EQ(error_of("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 -infinity\nf 1/1 2/1 3/-1\n"),
-              "<memory>:5: the face uses texture coordinate 1, but line 4 gives it '-infinity', which is not a finite number");
+    EXPECT_EQ(
+        error_of("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 -infinity\nf 1/1 2/1 3/-1\n"),
+        "<memory>:5: the face uses texture coordinate 1, but line 4 gives it '-infinity', which is not a finite number");
     // +1 and exponents are numbers as written.
     EXPECT_EQ(error_of("v +1 0 0\nv 1e0 1 0\nv 0 1 0.5E-1\n" + face), "");
 }
 
 TEST(ObjFile, NonFiniteCoordinatesNoFaceUsesAreAWarning) {
     const Model model = parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nv nan 0 0\nf 1 2 3\n", "");
-    EXPECT_EQ(model.warnings, (std::vector<std::string>{"<memory>:4: vertex 4 has 'nan', which is not a finite number; no face uses it"}));
+    EXPECT_EQ(
+        model.warnings,
+        (std::vector<std::string>{"<memory>:4: vertex 4 has 'nan', which is not a finite number; no face uses it"}));
 }
 
 TEST(ObjFile, FaceCornersOfNoOBJFormAreRefusedInOurWordsWithControlBytesShown) {
     const std::string points = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
-    EXPECT_EQ(error_of(points + "f 1/ 2/ 3/\n"), "<memory>:4: corner '1/' is not of the form v, v/vt, v/vt/vn or v//vn");
-    EXPECT_EQ(error_of(points + "f 1/1/1/1 2 3\n"), "<memory>:4: corner '1/1/1/1' is not of the form v, v/vt, v/vt/vn or v//vn");
+    EXPECT_EQ(error_of(points + "f 1/ 2/ 3/\n"),
+              "<memory>:4: corner '1/' is not of the form v, v/vt, v/vt/vn or v//vn");
+    EXPECT_EQ(error_of(points + "f 1/1/1/1 2 3\n"),
+              "<memory>:4: corner '1/1/1/1' is not of the form v, v/vt, v/vt/vn or v//vn");
     EXPECT_EQ(error_of(points + std::string("f 1 2\0 3\n", 9)), "<memory>:4: '2\\x00' is not a vertex index");
     EXPECT_EQ(error_of(points + "f 1 2 \x1b[2J\n"), "<memory>:4: '\\x1b[2J' is not a vertex index");
 }
@@ -324,18 +341,22 @@ TEST(ObjFile, AMissingMaterialLibraryIsOneWarning) {
     EXPECT_EQ(model.warnings[0], (dir / "m.obj").string() + ":1: material library '" + (dir / "missing.mtl").string() +
                                      "' does not exist; drawing the default material");
     const Model unknown = parse_obj(test_support::textured_cube_obj("lib.mtl", "absent"), "newmtl other\nKd 1 0 0\n");
-    EXPECT_EQ(unknown.warnings,
-              (std::vector<std::string>{"<memory>:14: material 'absent' is in none of the file's material libraries; drawing the default material"}));
+    EXPECT_EQ(
+        unknown.warnings,
+        (std::vector<std::string>{
+            "<memory>:14: material 'absent' is in none of the file's material libraries; drawing the default material"}));
 }
 
 TEST(ObjFile, ALineLongerThanTheCapIsRefusedWithItsNumberBeforeItIsHeld) {
     const test_support::ScratchDir dir;
-    test_support::write_text(dir / "long.obj", "v 0 0 0\n#" + std::string(raster::kMaxObjLineBytes, 'x') + "\nv 1 0 0\n");
+    test_support::write_text(dir / "long.obj",
+                             "v 0 0 0\n#" + std::string(raster::kMaxObjLineBytes, 'x') + "\nv 1 0 0\n");
     try {
         (void)raster::read_obj(dir / "long.obj");
         ADD_FAILURE() << "a line over the cap was read";
     } catch (const std::runtime_error& error) {
-        EXPECT_EQ(std::string(error.what()), (dir / "long.obj").string() + ":2: a line longer than 4 MiB, the most raster reads in one line");
+        EXPECT_EQ(std::string(error.what()),
+                  (dir / "long.obj").string() + ":2: a line longer than 4 MiB, the most raster reads in one line");
     }
 }
 
@@ -351,18 +372,21 @@ TEST(ObjFile, LineEndsByteOrderMarksAndBareKeywordsAreReadAsTinyobjloaderReadsTh
     // "v" alone is no vertex, so the nan is vertex 2, and the face uses it.
     EXPECT_EQ(error_of("v 1 0 0\nv\nv 0 0 nan\nv 0 1 0\nv 0 0 1\nf 1 2 4\n"),
               "<memory>:6: the face uses vertex 2, but line 3 gives it 'nan', which is not a finite number");
-    EXPECT_EQ(error_of("v 1 0 0\nv 0 0\nv 0 1 0\nf 1 2 3\n"), "<memory>:4: the face uses vertex 2, but line 2 gives it only 2 of its 3 coordinates");
+    EXPECT_EQ(error_of("v 1 0 0\nv 0 0\nv 0 1 0\nf 1 2 3\n"),
+              "<memory>:4: the face uses vertex 2, but line 2 gives it only 2 of its 3 coordinates");
 }
 
 TEST(ObjFile, ManyBadLinesGiveOneWarningPerCauseInLinearTime) {
     std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
     for (int i = 0; i < 100000; ++i) obj += "v nan 0 0\nmtllib \nusemtl m" + std::to_string(i) + "\n";
     const Model model = parse_obj(obj, "");
-    EXPECT_EQ(model.warnings, (std::vector<std::string>{
-                                  "<memory>:6: mtllib names no file (nor do 99999 more mtllib lines)",
-                                  "<memory>:5: vertex 4 has 'nan', which is not a finite number; no face uses it (nor 99999 more such vertices)",
-                                  "<memory>:7: material 'm0' is used, but the file names no material library (nor 99999 more materials the faces use); "
-                                  "drawing the default material"}));
+    EXPECT_EQ(
+        model.warnings,
+        (std::vector<std::string>{
+            "<memory>:6: mtllib names no file (nor do 99999 more mtllib lines)",
+            "<memory>:5: vertex 4 has 'nan', which is not a finite number; no face uses it (nor 99999 more such vertices)",
+            "<memory>:7: material 'm0' is used, but the file names no material library (nor 99999 more materials the faces use); "
+            "drawing the default material"}));
 }
 
 TEST(ObjFile, MapPathsWrittenTheWindowsWayWithQuotesOrAnotherLetterCaseAreFound) {
@@ -376,13 +400,14 @@ TEST(ObjFile, MapPathsWrittenTheWindowsWayWithQuotesOrAnotherLetterCaseAreFound)
     test_support::write_png(dir / "dup.PNG", red);
     const std::vector<std::pair<std::string, bool>> maps{
         {".\\Wal67AR_Small.JPG", true}, {"\"my texture.png\"", true}, {"textures\\WOOD.png", true},
-        {"./Textures/wood.png", true},  {"DUP.png", false},            {"nowhere\\wood.png", false}};
+        {"./Textures/wood.png", true},  {"DUP.png", false},           {"nowhere\\wood.png", false}};
     for (const auto& [written, found] : maps) {
         test_support::write_text(dir / "spider.mtl", "newmtl skin\nKd 1 1 1\nmap_Kd " + written + "\n");
         test_support::write_text(dir / "spider.obj", test_support::textured_cube_obj("spider.mtl", "skin"));
         const Model model = raster::read_obj(dir / "spider.obj");
         ASSERT_EQ(model.parts.size(), 1U);
-        EXPECT_EQ(model.parts[0].texture != nullptr, found) << written << ": " << ::testing::PrintToString(model.warnings);
+        EXPECT_EQ(model.parts[0].texture != nullptr, found)
+            << written << ": " << ::testing::PrintToString(model.warnings);
         EXPECT_EQ(model.warnings.size(), found ? 0U : 1U) << written;
     }
     // An MTL named the Windows way is found too.

@@ -9,10 +9,10 @@
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
-#include <fcntl.h>
 #include <string>
-#include <sys/stat.h>
 #include <thread>
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 using raster::detail::BeneathResolution;
@@ -24,7 +24,9 @@ namespace {
 
 constexpr BeneathResolution kBoth[] = {BeneathResolution::kernel_first, BeneathResolution::component_walk};
 
-const char* name_of(BeneathResolution resolution) { return resolution == BeneathResolution::kernel_first ? "openat2" : "walk"; }
+const char* name_of(BeneathResolution resolution) {
+    return resolution == BeneathResolution::kernel_first ? "openat2" : "walk";
+}
 
 ino_t inode_of(const fs::path& path) {
     struct stat status {};
@@ -130,7 +132,9 @@ TEST(OpenBeneath, ADirectorySwappedForALinkToOutsideIsNeverFollowed) {
         swapper.join();
         EXPECT_EQ(escaped, 0) << "of 2000 opens, " << escaped << " reached the file outside";
         EXPECT_GT(swaps.load(), 0);
-        if (fs::is_symlink(jail / "jail/sub")) ::renameat2(AT_FDCWD, sub.c_str(), AT_FDCWD, swap.c_str(), RENAME_EXCHANGE);
-        EXPECT_EQ(open_below(jail.descriptor(), "sub/file", resolution).inode, file) << "the file inside is still reached";
+        if (fs::is_symlink(jail / "jail/sub"))
+            ::renameat2(AT_FDCWD, sub.c_str(), AT_FDCWD, swap.c_str(), RENAME_EXCHANGE);
+        EXPECT_EQ(open_below(jail.descriptor(), "sub/file", resolution).inode, file)
+            << "the file inside is still reached";
     }
 }

@@ -4,14 +4,14 @@
 
 #include <chrono>
 #include <csignal>
-#include <gtest/gtest.h>
-#include <unistd.h>
 #include <stdexcept>
 #include <string>
-#include <sys/stat.h>
-#include <sys/wait.h>
 #include <thread>
 #include <vector>
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 using raster::write_output_file;
 using test_support::read_text;
@@ -130,9 +130,9 @@ TEST(OutputFile, BadDestinationsFailWithOneLineAndLeaveNothing) {
     test_support::write_text(dir / "a-file", "");
     fs::create_directory(dir / "a-directory");
     for (const auto& [target, reason] : {std::pair<fs::path, std::string>{dir / "missing" / "x.webp", "does not exist"},
-                                        {dir / "a-file" / "x.webp", "is not a directory"},
-                                        {dir / "a-directory", "is a directory"},
-                                        {"", "does not name a file"}}) {
+                                         {dir / "a-file" / "x.webp", "is not a directory"},
+                                         {dir / "a-directory", "is a directory"},
+                                         {"", "does not name a file"}}) {
         const std::string message = failure_of([&] { write_output_file(target, kBytes); });
         EXPECT_NE(message.find(reason), std::string::npos) << message;
         EXPECT_EQ(message.find('\n'), std::string::npos) << message;
@@ -176,14 +176,17 @@ TEST(OutputFile, ASignalOnAnyThreadWhileSeveralThreadsWriteLeavesEachOutputOldOr
         std::signal(SIGTERM, SIG_DFL);
         const std::vector<std::uint8_t> big(size, 'n');
         std::vector<std::thread> threads;
-        // Idle threads take a signal the writers would block: held on the writing thread only, it ended the program mid-write.
-        for (int k = 0; k < 2; ++k) threads.emplace_back([] {
-            for (;;) ::pause();
-        });
+        // Idle threads take a signal the writers would block: held on the writing thread only, it ended the program
+        // mid-write.
+        for (int k = 0; k < 2; ++k)
+            threads.emplace_back([] {
+                for (;;) ::pause();
+            });
         // Writers that overlap without end: the signal must still get through once their writes are done.
-        for (int k = 0; k < kWriters; ++k) threads.emplace_back([&, k] {
-            for (;;) write_output_file(output(k), big);
-        });
+        for (int k = 0; k < kWriters; ++k)
+            threads.emplace_back([&, k] {
+                for (;;) write_output_file(output(k), big);
+            });
         for (std::thread& thread : threads) thread.join();
         ::_exit(0);
     }
@@ -209,9 +212,11 @@ TEST(OutputFile, ASignalOnAnyThreadWhileSeveralThreadsWriteLeavesEachOutputOldOr
     }
     EXPECT_TRUE(writing) << "no temporary file was seen";
     EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM) << "status " << status;
-    EXPECT_EQ(dir.entries(), (std::vector<std::string>{"out-0.webp", "out-1.webp", "out-2.webp"})) << "no temporary file is left";
+    EXPECT_EQ(dir.entries(), (std::vector<std::string>{"out-0.webp", "out-1.webp", "out-2.webp"}))
+        << "no temporary file is left";
     for (int k = 0; k < kWriters; ++k) {
         const std::string text = read_text(output(k));
-        EXPECT_TRUE(text == "old" || (text.size() == size && text.find_first_not_of('n') == std::string::npos)) << output(k) << ": " << text.size() << " bytes";
+        EXPECT_TRUE(text == "old" || (text.size() == size && text.find_first_not_of('n') == std::string::npos))
+            << output(k) << ": " << text.size() << " bytes";
     }
 }

@@ -59,11 +59,13 @@ TEST(ReaderProcess, AReaderThatCrashesTakesOnlyItsOwnProcessDown) {
 TEST(ReaderProcess, AReaderThatNeverEndsIsStoppedAtItsTimeLimit) {
     raster::ReaderLimits limits;
     limits.max_seconds = 0.5;
-    const std::string why = refusal_of([]() -> raster::Model {
-        for (volatile bool forever = true; forever;) {
-        }
-        return {};
-    }, limits);
+    const std::string why = refusal_of(
+        []() -> raster::Model {
+            for (volatile bool forever = true; forever;) {
+            }
+            return {};
+        },
+        limits);
     EXPECT_EQ(why, "m.gltf: the glTF reader took more than 0.5 s; raise --max-seconds to allow it");
 }
 
@@ -73,10 +75,12 @@ TEST(ReaderProcess, AReaderThatAllocatesWithoutEndIsStoppedAtItsMemoryLimit) {
 #else
     raster::ReaderLimits limits;
     limits.max_memory = std::uint64_t{256} << 20;
-    const std::string why = refusal_of([]() -> raster::Model {
-        std::vector<std::vector<char>> hoard;
-        for (;;) hoard.emplace_back(std::size_t{64} << 20, 'x');
-    }, limits);
+    const std::string why = refusal_of(
+        []() -> raster::Model {
+            std::vector<std::vector<char> > hoard;
+            for (;;) hoard.emplace_back(std::size_t{64} << 20, 'x');
+        },
+        limits);
     EXPECT_EQ(why, "m.gltf: the glTF reader needed more than 256 MiB of memory; raise --max-memory to allow it");
 #endif
 }
@@ -84,17 +88,20 @@ TEST(ReaderProcess, AReaderThatAllocatesWithoutEndIsStoppedAtItsMemoryLimit) {
 TEST(ReaderProcess, AModelLargerThanTheMemoryLimitIsRefusedOnTheWayBack) {
     raster::ReaderLimits limits;
     limits.max_memory = std::uint64_t{1} << 20;
-    const std::string why = refusal_of([] {
-        raster::Model model;
-        model.parts.emplace_back();
-        model.parts.back().mesh.positions.assign(200000, glm::vec3(1.0F));
-        return model;
-    }, limits);
+    const std::string why = refusal_of(
+        [] {
+            raster::Model model;
+            model.parts.emplace_back();
+            model.parts.back().mesh.positions.assign(200000, glm::vec3(1.0F));
+            return model;
+        },
+        limits);
     EXPECT_EQ(why, "m.gltf: the glTF reader needed more than 1 MiB of memory; raise --max-memory to allow it");
 }
 
 TEST(ReaderProcess, TheReadersOwnRefusalArrivesWordForWord) {
-    EXPECT_EQ(refusal_of([]() -> raster::Model { throw std::runtime_error("m.gltf: buffer 0 is missing"); }), "m.gltf: buffer 0 is missing");
+    EXPECT_EQ(refusal_of([]() -> raster::Model { throw std::runtime_error("m.gltf: buffer 0 is missing"); }),
+              "m.gltf: buffer 0 is missing");
 }
 
 TEST(ReaderProcess, AModelComesBackFromTheChildExactlyAsItWasRead) {
@@ -137,7 +144,8 @@ TEST(ReaderProcess, BytesThatAreNoModelAreRefusedNotTrusted) {
 TEST(ReaderProcess, TheServiceForksReadersThatGiveWhatADirectChildGives) {
     const ScratchDir dir;
     const std::filesystem::path obj = test_support::write_crate_on_floor(dir.path());
-    write_text(dir / "chain.gltf", R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}], "nodes": [{"children": [0]}]})");
+    write_text(dir / "chain.gltf",
+               R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}], "nodes": [{"children": [0]}]})");
     const raster::ReaderService service;
     raster::ObjOptions through;
     through.limits.service = &service;
@@ -147,7 +155,8 @@ TEST(ReaderProcess, TheServiceForksReadersThatGiveWhatADirectChildGives) {
             (void)raster::read_model(dir / "chain.gltf", through);
             ADD_FAILURE() << "a looping node graph was read";
         } catch (const std::runtime_error& problem) {
-            EXPECT_EQ(std::string(problem.what()), (dir / "chain.gltf").string() + ": its node hierarchy loops (node 0)");
+            EXPECT_EQ(std::string(problem.what()),
+                      (dir / "chain.gltf").string() + ": its node hierarchy loops (node 0)");
         }
     }
     through.limits.max_memory = std::uint64_t{1} << 10;

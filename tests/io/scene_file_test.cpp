@@ -1,8 +1,8 @@
 // glTF 2.0, STL and PLY through the Open Asset Import Library: files the tests write, and the real
 // and broken files of Debian's assimp-testmodels.
 #include <raster/io/model_file.hpp>
-#include <raster/render/samples.hpp>
 #include <raster/render/model_scene.hpp>
+#include <raster/render/samples.hpp>
 
 #include "support/golden.hpp"
 #include "support/model_files.hpp"
@@ -31,7 +31,8 @@ const std::filesystem::path kTestModels = "/usr/share/assimp/models";
 Framebuffer drawn(const Model& model, raster::ModelView view = {}) {
     Framebuffer image(160, 120);
     raster::DepthBuffer depth;
-    raster::ModelStage(std::make_shared<const Model>(model), view, image.width(), image.height()).render(image, depth, 0.0, {.samples = raster::kSmoothSamples});
+    raster::ModelStage(std::make_shared<const Model>(model), view, image.width(), image.height())
+        .render(image, depth, 0.0, {.samples = raster::kSmoothSamples});
     return image;
 }
 
@@ -100,11 +101,12 @@ TEST(SceneFile, PlyAndStlColoursAreSrgbAndGltfColoursLinear) {
     for (const raster::LinearRgb& c : colours_of(pyramid)) seen.insert({c.r, c.g, c.b});
     EXPECT_EQ(seen, (std::set<std::tuple<float, float, float>>{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}, {1, 1, 1}}));
     // A mid grey byte in PLY is sRGB 128/255, linear 0.216.
-    test_support::write_text(dir / "grey.ply",
-                             "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-                             "property uchar red\nproperty uchar green\nproperty uchar blue\nelement face 1\n"
-                             "property list uchar int vertex_indices\nend_header\n0 0 0 128 128 128\n1 0 0 128 128 128\n"
-                             "0 1 0 128 128 128\n3 0 1 2\n");
+    test_support::write_text(
+        dir / "grey.ply",
+        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+        "property uchar red\nproperty uchar green\nproperty uchar blue\nelement face 1\n"
+        "property list uchar int vertex_indices\nend_header\n0 0 0 128 128 128\n1 0 0 128 128 128\n"
+        "0 1 0 128 128 128\n3 0 1 2\n");
     const std::vector<raster::LinearRgb> mid_grey = colours_of(raster::read_model(dir / "grey.ply"));
     ASSERT_EQ(mid_grey.size(), 3U);
     for (const raster::LinearRgb& c : mid_grey) {
@@ -117,8 +119,11 @@ TEST(SceneFile, PlyAndStlColoursAreSrgbAndGltfColoursLinear) {
     for (const raster::LinearRgb& c : gltf) EXPECT_EQ(c, (raster::LinearRgb{0.5F, 0.25F, 1.0F}));
     // Binary STL: a facet's 5-bit channels with bit 15 set, sRGB like PLY's; one facet full red,
     // one at 16/31 of green, two without a colour, which take assimp's default grey 0.6.
-    const auto visible = [](unsigned r, unsigned g, unsigned b) { return static_cast<std::uint16_t>(0x8000U | r << 10U | g << 5U | b); };
-    test_support::write_text(dir / "coloured.stl", test_support::stl_tetrahedron_binary({visible(31, 0, 0), visible(0, 16, 0), 0, 0}));
+    const auto visible = [](unsigned r, unsigned g, unsigned b) {
+        return static_cast<std::uint16_t>(0x8000U | r << 10U | g << 5U | b);
+    };
+    test_support::write_text(dir / "coloured.stl",
+                             test_support::stl_tetrahedron_binary({visible(31, 0, 0), visible(0, 16, 0), 0, 0}));
     std::set<std::tuple<int, int, int>> stl;  // in thousandths
     for (const raster::LinearRgb& c : colours_of(raster::read_model(dir / "coloured.stl"))) {
         stl.insert({std::lround(c.r * 1000), std::lround(c.g * 1000), std::lround(c.b * 1000)});
@@ -140,7 +145,8 @@ TEST(SceneFile, PlyAndStlColoursAreSrgbAndGltfColoursLinear) {
 }
 
 TEST(SceneFile, EveryFileItOpensIsAnInputNoOutputMayReplace) {
-    if (!std::filesystem::exists(kTestModels / "glTF2/BoxTextured-glTF/BoxTextured.gltf")) GTEST_SKIP() << "assimp-testmodels is not installed";
+    if (!std::filesystem::exists(kTestModels / "glTF2/BoxTextured-glTF/BoxTextured.gltf"))
+        GTEST_SKIP() << "assimp-testmodels is not installed";
     const ScratchDir dir;
     for (const char* name : {"BoxTextured.gltf", "BoxTextured0.bin", "CesiumLogoFlat.png"}) {
         std::filesystem::copy_file(kTestModels / "glTF2/BoxTextured-glTF" / name, dir / name);
@@ -157,24 +163,26 @@ TEST(SceneFile, EveryFileItOpensIsAnInputNoOutputMayReplace) {
 
 TEST(SceneFile, AssimpsTestModelsDrawAndItsBrokenOnesAreOneLine) {
     if (!std::filesystem::exists(kTestModels / "glTF2")) GTEST_SKIP() << "assimp-testmodels is not installed";
-    for (const char* good : {"glTF2/BoxTextured-glTF/BoxTextured.gltf", "glTF2/BoxTextured-glTF-Binary/BoxTextured.glb",
-                             "glTF2/BoxTextured-glTF-Embedded/BoxTextured.gltf", "glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb",
-                             "STL/Spider_ascii.stl", "STL/Spider_binary.stl", "STL/Wuson.stl", "PLY/Wuson.ply", "PLY/cube_binary.ply",
-                             "PLY/float-color.ply"}) {
+    for (const char* good :
+         {"glTF2/BoxTextured-glTF/BoxTextured.gltf", "glTF2/BoxTextured-glTF-Binary/BoxTextured.glb",
+          "glTF2/BoxTextured-glTF-Embedded/BoxTextured.gltf", "glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb",
+          "STL/Spider_ascii.stl", "STL/Spider_binary.stl", "STL/Wuson.stl", "PLY/Wuson.ply", "PLY/cube_binary.ply",
+          "PLY/float-color.ply"}) {
         EXPECT_EQ(refusal(kTestModels / good), "") << good;
     }
     const Framebuffer box = drawn(raster::read_model(kTestModels / "glTF2/BoxTextured-glTF/BoxTextured.gltf"));
     EXPECT_EQ(drawn(raster::read_model(kTestModels / "glTF2/BoxTextured-glTF-Binary/BoxTextured.glb")), box);
     EXPECT_EQ(drawn(raster::read_model(kTestModels / "glTF2/BoxTextured-glTF-Embedded/BoxTextured.gltf")), box);
-    for (const char* bad : {"glTF2/MissingBin/BoxTextured.gltf", "glTF2/BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb",
-                            "glTF2/RecursiveNodes/RecursiveNodes.gltf", "glTF2/wrongTypes/badNumber.gltf", "glTF2/wrongTypes/badArray.gltf",
-                            "glTF2/IndexOutOfRange/AllIndicesOutOfRange.gltf", "glTF2/TestNoRootNode/NoScene.gltf", "invalid/empty.ply",
-                            "invalid/empty.x"}) {
+    for (const char* bad :
+         {"glTF2/MissingBin/BoxTextured.gltf", "glTF2/BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb",
+          "glTF2/RecursiveNodes/RecursiveNodes.gltf", "glTF2/wrongTypes/badNumber.gltf",
+          "glTF2/wrongTypes/badArray.gltf", "glTF2/IndexOutOfRange/AllIndicesOutOfRange.gltf",
+          "glTF2/TestNoRootNode/NoScene.gltf", "invalid/empty.ply", "invalid/empty.x"}) {
         const std::string message = refusal(kTestModels / bad);
         EXPECT_EQ(message.rfind((kTestModels / bad).string() + ": ", 0), 0U) << bad << ": " << message;
         EXPECT_EQ(message.find('\n'), std::string::npos) << message;
     }
     EXPECT_EQ(refusal(kTestModels / "glTF2/MissingBin/BoxTextured.gltf"),
-              (kTestModels / "glTF2/MissingBin/BoxTextured.gltf").string() + ": '" + (kTestModels / "glTF2/MissingBin/BoxTextured0.bin").string() +
-                  "' does not exist");
+              (kTestModels / "glTF2/MissingBin/BoxTextured.gltf").string() + ": '" +
+                  (kTestModels / "glTF2/MissingBin/BoxTextured0.bin").string() + "' does not exist");
 }

@@ -1,5 +1,5 @@
-#include <raster/scenes/scenes.hpp>
 #include <raster/io/webp.hpp>
+#include <raster/scenes/scenes.hpp>
 
 #include <raster/io/output_file.hpp>
 
@@ -32,8 +32,10 @@ using test_support::ScratchDir;
 namespace {
 
 // webp-frame run with its address space limited to `mebibytes` (RLIMIT_AS, through ulimit -v).
-test_support::RunResult run_limited(std::uint64_t mebibytes, const std::vector<std::string>& arguments, const std::filesystem::path& dir) {
-    std::vector<std::string> shell{"-c", "ulimit -v " + std::to_string(mebibytes * 1024) + " && exec \"$0\" \"$@\"", kWebpFrame};
+test_support::RunResult run_limited(std::uint64_t mebibytes, const std::vector<std::string>& arguments,
+                                    const std::filesystem::path& dir) {
+    std::vector<std::string> shell{"-c", "ulimit -v " + std::to_string(mebibytes * 1024) + " && exec \"$0\" \"$@\"",
+                                   kWebpFrame};
     shell.insert(shell.end(), arguments.begin(), arguments.end());
     return run("/bin/sh", shell, dir);
 }
@@ -41,16 +43,18 @@ test_support::RunResult run_limited(std::uint64_t mebibytes, const std::vector<s
 }  // namespace
 #endif
 
-
 TEST(WebpFrameApp, WritesFrameNAsTheWholePictureAPlayerShows) {
     const ScratchDir dir;
-    ASSERT_EQ(run(kAnimatedCube, {"--frames", "12", "--width", "96", "--height", "72", "spin.webp"}, dir.path()).exit_code, 0);
+    ASSERT_EQ(
+        run(kAnimatedCube, {"--frames", "12", "--width", "96", "--height", "72", "spin.webp"}, dir.path()).exit_code,
+        0);
     Framebuffer expected(96, 72);
     for (const int index : {0, 5, 11}) {
         const std::string out = "frame-" + std::to_string(index) + ".webp";
         const auto result = run(kWebpFrame, {"spin.webp", std::to_string(index), out}, dir.path());
         EXPECT_EQ(result.exit_code, 0) << result.err;
-        EXPECT_EQ(result.out.rfind("Wrote " + out + ": frame " + std::to_string(index) + " of spin.webp, 96x72, ", 0), 0U)
+        EXPECT_EQ(result.out.rfind("Wrote " + out + ": frame " + std::to_string(index) + " of spin.webp, 96x72, ", 0),
+                  0U)
             << result.out;
         const raster::DecodedWebp still = raster::read_webp(dir / out);
         ASSERT_EQ(still.frames.size(), 1U);
@@ -94,7 +98,8 @@ TEST(WebpFrameApp, DecodingHoldsOneCanvasAndOneFrameHoweverLargeTheCanvasClaims)
     // One canvas at 4 bytes a pixel, and 32 MiB for the frame and the slack: well under two canvases.
     const std::uint64_t canvas = std::uint64_t{kSide} * kSide * 4 / (1024 * 1024);
     const std::uint64_t limit = high + canvas + 32;
-    EXPECT_TRUE(decodes("huge.webp", limit)) << "more than " << limit << " MiB, " << high << " MiB of it before any canvas";
+    EXPECT_TRUE(decodes("huge.webp", limit))
+        << "more than " << limit << " MiB, " << high << " MiB of it before any canvas";
     EXPECT_FALSE(std::filesystem::exists(dir / "out.webp"));
 #endif
 }

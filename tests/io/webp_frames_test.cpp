@@ -22,11 +22,14 @@ using test_support::ScratchDir;
 
 TEST(WebpFramesApp, WritesEveryFrameAsTheNumberedPngAPlayerShows) {
     const ScratchDir dir;
-    ASSERT_EQ(run(kAnimatedCube, {"--frames", "12", "--width", "96", "--height", "72", "spin.webp"}, dir.path()).exit_code, 0);
+    ASSERT_EQ(
+        run(kAnimatedCube, {"--frames", "12", "--width", "96", "--height", "72", "spin.webp"}, dir.path()).exit_code,
+        0);
     const auto result = run(kWebpFrames, {"spin.webp", "frames"}, dir.path());
     EXPECT_EQ(result.exit_code, 0) << result.err;
     EXPECT_EQ(result.err, "");
-    EXPECT_EQ(result.out.rfind("Wrote frames/0000.png to 0011.png: 12 frames of 96x72, 20 ms each, ", 0), 0U) << result.out;
+    EXPECT_EQ(result.out.rfind("Wrote frames/0000.png to 0011.png: 12 frames of 96x72, 20 ms each, ", 0), 0U)
+        << result.out;
     Framebuffer expected(96, 72);
     for (int index = 0; index < 12; ++index) {
         char name[16];
@@ -52,7 +55,8 @@ TEST(WebpFramesApp, SaysWhenFramesLastUnequallyLong) {
     raster::write_output_file(dir / "uneven.webp", bytes);
     const auto result = run(kWebpFrames, {"uneven.webp", "f"}, dir.path());
     EXPECT_EQ(result.exit_code, 0) << result.err;
-    EXPECT_EQ(result.out.rfind("Wrote f/0000.png to 0001.png: 2 frames of 8x8, lasting 20 to 40 ms, ", 0), 0U) << result.out;
+    EXPECT_EQ(result.out.rfind("Wrote f/0000.png to 0001.png: 2 frames of 8x8, lasting 20 to 40 ms, ", 0), 0U)
+        << result.out;
 }
 
 TEST(WebpFramesApp, MistakesAreOneLineAndTheInputIsNeverReplaced) {
@@ -62,7 +66,10 @@ TEST(WebpFramesApp, MistakesAreOneLineAndTheInputIsNeverReplaced) {
     EXPECT_EQ(fake.exit_code, 1);
     EXPECT_EQ(std::count(fake.err.begin(), fake.err.end(), '\n'), 1) << fake.err;
     EXPECT_EQ(run(kWebpFrames, {"fake.webp"}, dir.path()).exit_code, 2);
-    ASSERT_EQ(run(kAnimatedCube, {"--frames", "2", "--width", "8", "--height", "8", "0000.png", "--format", "webp"}, dir.path()).exit_code, 0);
+    ASSERT_EQ(run(kAnimatedCube, {"--frames", "2", "--width", "8", "--height", "8", "0000.png", "--format", "webp"},
+                  dir.path())
+                  .exit_code,
+              0);
     const std::vector<std::uint8_t> before = read_bytes(dir / "0000.png");
     const auto over = run(kWebpFrames, {"0000.png", "."}, dir.path());
     EXPECT_EQ(over.exit_code, 1);
@@ -71,7 +78,10 @@ TEST(WebpFramesApp, MistakesAreOneLineAndTheInputIsNeverReplaced) {
 
 TEST(WebpFramesApp, AnyFrameFileAlreadyThereIsRefusedAndNothingIsWritten) {
     const ScratchDir dir;
-    ASSERT_EQ(run(kAnimatedCube, {"--frames", "12", "--width", "32", "--height", "24", "--quiet", "spin.webp"}, dir.path()).exit_code, 0);
+    ASSERT_EQ(
+        run(kAnimatedCube, {"--frames", "12", "--width", "32", "--height", "24", "--quiet", "spin.webp"}, dir.path())
+            .exit_code,
+        0);
     std::filesystem::create_directory(dir / "frames");
     test_support::write_text(dir / "frames" / "0007.png", "someone else's frame");
     const auto seventh = run(kWebpFrames, {"spin.webp", "frames"}, dir.path());
@@ -85,7 +95,8 @@ TEST(WebpFramesApp, AnyFrameFileAlreadyThereIsRefusedAndNothingIsWritten) {
     EXPECT_EQ(dangling.exit_code, 1);
     EXPECT_EQ(dangling.err, "webp-frames: 'frames' already holds frames (0011.png); choose an empty directory\n");
     std::vector<std::string> left;
-    for (const auto& entry : std::filesystem::directory_iterator(dir / "frames")) left.push_back(entry.path().filename().string());
+    for (const auto& entry : std::filesystem::directory_iterator(dir / "frames"))
+        left.push_back(entry.path().filename().string());
     EXPECT_EQ(left, std::vector<std::string>{"0011.png"});
     EXPECT_FALSE(std::filesystem::exists(dir / "nowhere.png"));
 }

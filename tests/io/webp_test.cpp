@@ -1,11 +1,11 @@
-#include <raster/scenes/scenes.hpp>
 #include <raster/io/webp.hpp>
+#include <raster/scenes/scenes.hpp>
 
 #include "support/scratch.hpp"
 
-#include <gtest/gtest.h>
 #include <limits>
 #include <stdexcept>
+#include <gtest/gtest.h>
 
 using raster::AnimationWriter;
 using raster::Framebuffer;
@@ -17,8 +17,9 @@ Framebuffer gradient(int width, int height, int seed) {
     Framebuffer image(width, height);
     for (int y = 0; y < height; ++y) {
         for (int x = 0; x < width; ++x) {
-            image.set_pixel(x, y, {static_cast<std::uint8_t>(x * 7 + seed), static_cast<std::uint8_t>(y * 13),
-                                   static_cast<std::uint8_t>((x ^ y) + seed * 3)});
+            image.set_pixel(x, y,
+                            {static_cast<std::uint8_t>(x * 7 + seed), static_cast<std::uint8_t>(y * 13),
+                             static_cast<std::uint8_t>((x ^ y) + seed * 3)});
         }
     }
     return image;

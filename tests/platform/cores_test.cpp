@@ -1,9 +1,9 @@
 #include <raster/platform/cores.hpp>
 
 #include <cstddef>
-#include <sched.h>
 #include <thread>
 #include <gtest/gtest.h>
+#include <sched.h>
 
 TEST(AvailableCores, IsAtLeastOne) { EXPECT_GE(raster::available_cores(), 1); }
 

@@ -5,38 +5,30 @@
 
 #include "support/picture.hpp"
 
-#include <glm/ext/matrix_transform.hpp>
-#include <glm/ext/scalar_constants.hpp>
-#include <gtest/gtest.h>
 #include <limits>
 #include <string>
 #include <vector>
+#include <glm/ext/matrix_transform.hpp>
+#include <glm/ext/scalar_constants.hpp>
+#include <gtest/gtest.h>
 
 using raster::Framebuffer;
 using test_support::looks_like;
 
 namespace {
 const std::map<char, raster::Rgb> kFaceLegend{
-    {'B', raster::kCubeFacePalette[raster::kNearFace]},
-    {'R', raster::kCubeFacePalette[raster::kFarFace]},
-    {'A', raster::kCubeFacePalette[raster::kRightFace]},
-    {'I', raster::kCubeFacePalette[raster::kLeftFace]},
-    {'J', raster::kCubeFacePalette[raster::kTopFace]},
-    {'O', raster::kCubeFacePalette[raster::kBottomFace]}};
+    {'B', raster::kCubeFacePalette[raster::kNearFace]},  {'R', raster::kCubeFacePalette[raster::kFarFace]},
+    {'A', raster::kCubeFacePalette[raster::kRightFace]}, {'I', raster::kCubeFacePalette[raster::kLeftFace]},
+    {'J', raster::kCubeFacePalette[raster::kTopFace]},   {'O', raster::kCubeFacePalette[raster::kBottomFace]}};
 }
 
 TEST(DrawCube, UnitCubeAtIdentityIsOneBlueSquare) {
     Framebuffer image(11, 7);
     raster::render_unit_cube(image);
-    EXPECT_TRUE(looks_like(image,
-                           {"...........",
-                            "...........",
-                            "....BBB....",
-                            "....BBB....",
-                            "....BBB....",
-                            "...........",
-                            "..........."},
-                           kFaceLegend));
+    EXPECT_TRUE(looks_like(
+        image,
+        {"...........", "...........", "....BBB....", "....BBB....", "....BBB....", "...........", "..........."},
+        kFaceLegend));
 }
 
 TEST(DrawCube, UnitCubeSeenFromBehindIsOneRedSquare) {
@@ -50,14 +42,8 @@ TEST(DrawCube, UnitCubeSeenFromBehindIsOneRedSquare) {
 TEST(DrawCube, UnitCubeWireframeIsTheNearSquareOutline) {
     Framebuffer image(11, 7);
     raster::render_cube(image, glm::mat4(1.0F), raster::CubeStyle::wireframe, raster::kWhite);
-    EXPECT_TRUE(looks_like(image,
-                           {"...........",
-                            "...........",
-                            "....++++...",
-                            "....+..+...",
-                            "....+..+...",
-                            "....++++...",
-                            "..........."}));
+    EXPECT_TRUE(looks_like(image, {"...........", "...........", "....++++...", "....+..+...", "....+..+...",
+                                   "....++++...", "..........."}));
 }
 
 TEST(DrawCube, CulledWireframeDrawsOnlyEdgesOfFrontFaces) {

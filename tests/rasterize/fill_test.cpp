@@ -3,8 +3,8 @@
 #include "support/picture.hpp"
 
 #include <algorithm>
-#include <gtest/gtest.h>
 #include <vector>
+#include <gtest/gtest.h>
 
 using raster::fill_convex;
 using raster::Framebuffer;
@@ -135,8 +135,7 @@ TEST(FillConvex, SignedAreaIsPositiveForCornersClockwiseOnScreen) {
 TEST(FillConvex, ATriangleGivenAsFourCornersWithOneRepeatedDrawsTheTriangle) {
     const Polygon triangle{at(1, 0.5), at(8.5, 0.5), at(1, 4.5)};
     const Framebuffer expected = filled_10x5(triangle);
-    EXPECT_TRUE(looks_like(expected,
-                           {"..........", ".+++++++..", ".+++++....", ".+++......", ".+........"}));
+    EXPECT_TRUE(looks_like(expected, {"..........", ".+++++++..", ".+++++....", ".+++......", ".+........"}));
     for (std::size_t repeated = 0; repeated < triangle.size(); ++repeated) {
         Polygon quad = triangle;
         quad.insert(quad.begin() + static_cast<std::ptrdiff_t>(repeated), triangle[repeated]);
@@ -166,8 +165,8 @@ TEST(FillConvex, ASquareSplitIntoDegenerateQuadsCoversEachPixelOnce) {
 
 TEST(FillConvex, CollinearRunsOfCornersDrawTheSamePolygon) {
     const Polygon rectangle{at(1.5, 0.5), at(7.5, 0.5), at(7.5, 3.5), at(1.5, 3.5)};
-    const Polygon with_midpoints{at(1.5, 0.5), at(3, 0.5), at(5.25, 0.5), at(7.5, 0.5), at(7.5, 2),
-                                 at(7.5, 3.5), at(4, 3.5), at(1.5, 3.5)};
+    const Polygon with_midpoints{at(1.5, 0.5), at(3, 0.5),   at(5.25, 0.5), at(7.5, 0.5),
+                                 at(7.5, 2),   at(7.5, 3.5), at(4, 3.5),    at(1.5, 3.5)};
     EXPECT_EQ(filled_10x5(with_midpoints), filled_10x5(rectangle));
     const Polygon triangle{at(1, 0.5), at(8.5, 0.5), at(1, 4.5)};
     const Polygon with_points_on_the_slant{at(1, 0.5), at(8.5, 0.5), at(4.75, 2.5), at(1, 4.5)};

@@ -2,8 +2,8 @@
 
 #include "support/picture.hpp"
 
-#include <gtest/gtest.h>
 #include <stdexcept>
+#include <gtest/gtest.h>
 
 using raster::Framebuffer;
 using raster::Rgb;
@@ -35,8 +35,8 @@ TEST(Framebuffer, StoresRowMajorRgbBytes) {
 
 TEST(Framebuffer, SkipsWritesOutsideIncludingNegativeCoordinatesWithoutWrapping) {
     Framebuffer image(4, 3);
-    for (const auto& [x, y] : {std::pair{-1, 0}, {0, -1}, {4, 0}, {0, 3}, {-1, -1}, {4, 3},
-                              {-2147483647 - 1, 1}, {1, 2147483647}}) {
+    for (const auto& [x, y] :
+         {std::pair{-1, 0}, {0, -1}, {4, 0}, {0, 3}, {-1, -1}, {4, 3}, {-2147483647 - 1, 1}, {1, 2147483647}}) {
         image.set_pixel(x, y, kWhite);
     }
     EXPECT_TRUE(looks_like(image, {"....", "....", "...."}));
@@ -46,8 +46,15 @@ TEST(Framebuffer, FillRowTakesSpansAnywhereInThePlane) {
     Framebuffer image(4, 3);
     constexpr int kMin = -2147483647 - 1;
     constexpr int kMax = 2147483647;
-    for (const auto& [begin, end] : {std::pair{-10, -5}, {kMin, kMin}, {kMin, -1}, {4, 9}, {kMax, kMin},
-                                    {3, 1}, {kMax, kMax}, {-20, -19}, {2, 2}}) {
+    for (const auto& [begin, end] : {std::pair{-10, -5},
+                                     {kMin, kMin},
+                                     {kMin, -1},
+                                     {4, 9},
+                                     {kMax, kMin},
+                                     {3, 1},
+                                     {kMax, kMax},
+                                     {-20, -19},
+                                     {2, 2}}) {
         for (const int y : {0, 1, 2}) image.fill_row(y, begin, end, kWhite);
     }
     EXPECT_TRUE(looks_like(image, {"....", "....", "...."})) << "spans off the buffer or empty paint nothing";

@@ -3,8 +3,8 @@
 #include "support/picture.hpp"
 
 #include <cmath>
-#include <gtest/gtest.h>
 #include <random>
+#include <gtest/gtest.h>
 
 using raster::draw_line;
 using raster::Framebuffer;
@@ -28,8 +28,7 @@ void draw_every_sample(Framebuffer& image, glm::ivec2 from, glm::ivec2 to) {
     for (int i = 0; i <= steps; ++i) {
         const double x = from.x + (steps == 0 ? 0.0 : static_cast<double>(dx) * i / steps);
         const double y = from.y + (steps == 0 ? 0.0 : static_cast<double>(dy) * i / steps);
-        image.set_pixel(static_cast<int>(std::floor(x + 0.5)), static_cast<int>(std::floor(y + 0.5)),
-                        kWhite);
+        image.set_pixel(static_cast<int>(std::floor(x + 0.5)), static_cast<int>(std::floor(y + 0.5)), kWhite);
     }
 }
 
@@ -61,8 +60,8 @@ TEST(DrawLine, SteepLineHasOnePixelPerRowAndRoundsHalvesUp) {
 }
 
 TEST(DrawLine, ReversedEndpointsDrawTheSamePixels) {
-    for (const auto& [a, b] : {std::pair<glm::ivec2, glm::ivec2>{{1, 0}, {3, 4}},
-                               {{0, 0}, {9, 3}}, {{2, 4}, {9, 0}}, {{0, 1}, {7, 2}}}) {
+    for (const auto& [a, b] :
+         {std::pair<glm::ivec2, glm::ivec2>{{1, 0}, {3, 4}}, {{0, 0}, {9, 3}}, {{2, 4}, {9, 0}}, {{0, 1}, {7, 2}}}) {
         EXPECT_EQ(line_on_10x5(a, b), line_on_10x5(b, a));
     }
 }
@@ -152,8 +151,7 @@ TEST(DrawLine, WalkingOnlyVisibleSamplesMatchesWalkingEverySample) {
         Framebuffer full(23, 17);
         draw_line(bounded, from, to, kWhite);
         draw_every_sample(full, from, to);
-        ASSERT_EQ(bounded, full) << "segment (" << from.x << ", " << from.y << ") -> (" << to.x
-                                 << ", " << to.y << ")\n"
+        ASSERT_EQ(bounded, full) << "segment (" << from.x << ", " << from.y << ") -> (" << to.x << ", " << to.y << ")\n"
                                  << test_support::to_ascii_art(bounded) << "vs every sample\n"
                                  << test_support::to_ascii_art(full);
     }

@@ -1,8 +1,8 @@
 #include "reference.hpp"
 
-#include <gtest/gtest.h>
 #include <string>
 #include <vector>
+#include <gtest/gtest.h>
 
 using lab::Coverage;
 using lab::ExactPoint;
@@ -10,9 +10,7 @@ using lab::ExactPoint;
 namespace {
 
 // A corner at pixel coordinates given in sixteenths of a pixel.
-ExactPoint sixteenths(std::int64_t x, std::int64_t y) {
-    return {x * lab::kExactOne / 16, y * lab::kExactOne / 16};
-}
+ExactPoint sixteenths(std::int64_t x, std::int64_t y) { return {x * lab::kExactOne / 16, y * lab::kExactOne / 16}; }
 ExactPoint pixel(std::int64_t x, std::int64_t y) { return sixteenths(16 * x, 16 * y); }
 
 std::vector<std::string> picture(const Coverage& coverage) {
@@ -70,21 +68,23 @@ TEST(ReferencePolygon, SharedEdgeCentresGoToExactlyOneOfTwoTriangles) {
     Coverage coverage({0, 0, 8, 5});
     lab::reference_polygon(std::vector{pixel(1, 0), pixel(7, 0), pixel(7, 3)}, coverage);
     lab::reference_polygon(std::vector{pixel(1, 0), pixel(7, 3), pixel(1, 3)}, coverage);
-    EXPECT_EQ(picture(coverage), (std::vector<std::string>{".111111.", ".111111.", ".111111.", "........", "........"}));
+    EXPECT_EQ(picture(coverage),
+              (std::vector<std::string>{".111111.", ".111111.", ".111111.", "........", "........"}));
 }
 
 TEST(ReferencePolygon, ClosedFanCoversEveryCentreOfItsRectangleExactlyOnce) {
     // A rectangle on the 1/16 grid cut into a fan around an interior point, with many centres on
     // the cuts: each centre inside is covered once, none outside.
-    const std::vector<ExactPoint> rim{sixteenths(8, 8), sixteenths(48, 8), sixteenths(104, 8), sixteenths(104, 40),
-                                      sixteenths(104, 72), sixteenths(56, 72), sixteenths(8, 72), sixteenths(8, 40)};
+    const std::vector<ExactPoint> rim{sixteenths(8, 8),    sixteenths(48, 8),  sixteenths(104, 8), sixteenths(104, 40),
+                                      sixteenths(104, 72), sixteenths(56, 72), sixteenths(8, 72),  sixteenths(8, 40)};
     const ExactPoint hub = sixteenths(48, 32);
     Coverage coverage({0, 0, 8, 5});
     for (std::size_t i = 0; i < rim.size(); ++i) {
         lab::reference_polygon(std::vector{hub, rim[i], rim[(i + 1) % rim.size()]}, coverage);
     }
     // Centres with 0.5 <= x < 6.5 and 0.5 <= y < 4.5.
-    EXPECT_EQ(picture(coverage), (std::vector<std::string>{"........", ".111111.", ".111111.", ".111111.", ".111111."}));
+    EXPECT_EQ(picture(coverage),
+              (std::vector<std::string>{"........", ".111111.", ".111111.", ".111111.", ".111111."}));
 }
 
 TEST(ReferencePolygon, VertexSharedByAFanBelongsToExactlyOneTriangle) {
@@ -101,7 +101,8 @@ TEST(ReferencePolygon, VertexSharedByAFanBelongsToExactlyOneTriangle) {
 TEST(ReferenceLine, DrawsBothEndsAndOnePixelPerColumn) {
     Coverage coverage({0, 0, 8, 5});
     lab::reference_line({0, 0}, {7, 2}, coverage);
-    EXPECT_EQ(picture(coverage), (std::vector<std::string>{"11......", "..1111..", "......11", "........", "........"}));
+    EXPECT_EQ(picture(coverage),
+              (std::vector<std::string>{"11......", "..1111..", "......11", "........", "........"}));
 }
 
 TEST(ReferenceLine, BreaksTiesTowardPositiveYThenPositiveX) {
@@ -119,5 +120,6 @@ TEST(ReferenceLine, DiagonalAndSinglePixel) {
     Coverage coverage({0, 0, 8, 5});
     lab::reference_line({1, 4}, {5, 0}, coverage);
     lab::reference_line({7, 4}, {7, 4}, coverage);
-    EXPECT_EQ(picture(coverage), (std::vector<std::string>{".....1..", "....1...", "...1....", "..1.....", ".1.....1"}));
+    EXPECT_EQ(picture(coverage),
+              (std::vector<std::string>{".....1..", "....1...", "...1....", "..1.....", ".1.....1"}));
 }

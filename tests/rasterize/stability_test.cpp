@@ -10,8 +10,8 @@
 #include <raster/scenes/scenes.hpp>
 
 #include <cmath>
-#include <gtest/gtest.h>
 #include <limits>
+#include <gtest/gtest.h>
 
 namespace {
 
@@ -141,13 +141,15 @@ TEST(EveryFillMethod, SkipsNonFiniteCornersWithoutWriting) {
 
 TEST(DefaultFill, ZeroAreaSliverAndCollinearShapesFollowTheReference) {
     const lab::PixelRect window{0, 0, 16, 16};
-    const auto at = [](double x, double y) { return lab::ExactPoint{static_cast<std::int64_t>(x * 1024), static_cast<std::int64_t>(y * 1024)}; };
+    const auto at = [](double x, double y) {
+        return lab::ExactPoint{static_cast<std::int64_t>(x * 1024), static_cast<std::int64_t>(y * 1024)};
+    };
     const std::vector<lab::Polygon> shapes{
-        {at(2, 2), at(2, 2), at(2, 2)},                   // a point
-        {at(1, 1), at(5, 5), at(9, 9)},                   // collinear through centres
-        {at(1, 1), at(14, 2), at(14, 2), at(1, 1)},       // a quad folded onto a segment
+        {at(2, 2), at(2, 2), at(2, 2)},                     // a point
+        {at(1, 1), at(5, 5), at(9, 9)},                     // collinear through centres
+        {at(1, 1), at(14, 2), at(14, 2), at(1, 1)},         // a quad folded onto a segment
         {at(1, 3), at(14, 3.00390625), at(1, 3.00390625)},  // a sliver 1/256 px tall on a row of centres
-        {at(3, 1), at(3.00390625, 14), at(3, 14)},        // a sliver 1/256 px wide on a column of centres
+        {at(3, 1), at(3.00390625, 14), at(3, 14)},          // a sliver 1/256 px wide on a column of centres
     };
     for (const lab::Polygon& shape : shapes) {
         const lab::PolygonCorpus corpus{"shape", window, {shape}};

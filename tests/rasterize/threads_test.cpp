@@ -1,12 +1,12 @@
 // Rendering on several threads and encoding on several: the same pictures and the same files
 // whatever the count.
-#include <raster/scenes/diary_scenes.hpp>
-#include <raster/render/model_scene.hpp>
+#include <raster/geometry/shapes.hpp>
 #include <raster/io/obj_file.hpp>
+#include <raster/io/webp.hpp>
+#include <raster/render/model_scene.hpp>
+#include <raster/scenes/diary_scenes.hpp>
 #include <raster/scenes/scenes.hpp>
 #include <raster/scenes/seed_scenes.hpp>
-#include <raster/geometry/shapes.hpp>
-#include <raster/io/webp.hpp>
 
 #include <raster/shade/shaders.hpp>
 #include "rasterize/setup_perspective.hpp"
@@ -14,8 +14,8 @@
 #include "support/model_files.hpp"
 #include "support/scratch.hpp"
 
-#include <gtest/gtest.h>
 #include <glm/gtc/matrix_transform.hpp>
+#include <gtest/gtest.h>
 
 using raster::Framebuffer;
 
@@ -47,7 +47,8 @@ TEST(Threads, EveryThreadCountDrawsTheSamePicture) {
     for (const raster::SeedSceneInfo& info : raster::seed_scenes()) {
         const raster::PerspectiveScene scene = raster::SeedScene(info.name).frame(kWidth, kHeight, 50, info.frames);
         const Framebuffer one = rendered(scene, 1);
-        for (const int threads : {2, 5}) EXPECT_EQ(rendered(scene, threads), one) << info.name << " on " << threads << " threads";
+        for (const int threads : {2, 5})
+            EXPECT_EQ(rendered(scene, threads), one) << info.name << " on " << threads << " threads";
     }
 }
 
@@ -56,14 +57,15 @@ TEST(Threads, EveryThreadCountDrawsTheSamePicture) {
 // the near plane too.
 TEST(Threads, StripsTogetherDrawWhatOnePassOverTheWholeImageDraws) {
     constexpr int width = 90, height = 700;  // strips of 64 rows: eleven, the last short
-    const raster::PerspectiveCamera camera =
-        raster::PerspectiveCamera::look_at(width, height, {0.2F, 0.5F, -0.9F}, glm::vec3(0.0F), {0, 1, 0}, {70.0, 0.2, 10.0});
+    const raster::PerspectiveCamera camera = raster::PerspectiveCamera::look_at(
+        width, height, {0.2F, 0.5F, -0.9F}, glm::vec3(0.0F), {0, 1, 0}, {70.0, 0.2, 10.0});
     const raster::IntensityMaterial material{{200, 120, 40}, 0.2F, 0.8F, std::nullopt};
     const std::vector<raster::DirectionalLight> lights{{glm::normalize(glm::vec3(1, 1, -1)), 1.0F}};
     const raster::Mesh torus = raster::torus(48, 32);
     const glm::mat4 model = glm::rotate(glm::mat4(1.0F), 0.6F, glm::vec3(1, 0, 0));
     raster::PerspectiveScene scene{camera, {10, 20, 30}, lights, {}, {}};
-    scene.objects.push_back({std::make_shared<const raster::Mesh>(torus), model, material, raster::ShadingMethod::flat});
+    scene.objects.push_back(
+        {std::make_shared<const raster::Mesh>(torus), model, material, raster::ShadingMethod::flat});
 
     Framebuffer whole(width, height);
     whole.clear(scene.background);
@@ -140,5 +142,6 @@ TEST(Threads, ParallelAnimationsDecodeToEveryFrameAndMatchWhateverTheThreadCount
         EXPECT_EQ(decoded.frames[i].start_ms, static_cast<int>(i) * 20);
         EXPECT_EQ(decoded.frames[i].duration_ms, 20);
     }
-    EXPECT_THROW(raster::AnimationEncoder(8, 8, 20, {raster::Effort::fast, raster::AnimationPath::parallel, -1}), std::invalid_argument);
+    EXPECT_THROW(raster::AnimationEncoder(8, 8, 20, {raster::Effort::fast, raster::AnimationPath::parallel, -1}),
+                 std::invalid_argument);
 }

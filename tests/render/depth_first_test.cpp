@@ -19,7 +19,8 @@ constexpr int kWidth = 160, kHeight = 120;
 // keeps depth, the coverage a Renderer hands out as alpha.
 template <typename Scene>
 void expect_same_either_way(const Scene& scene, const std::string& name) {
-    const RenderOptions ways[] = {{.samples = 1}, {.samples = 4}, {.samples = 2, .shade_every_sample = true}, {.threads = 3, .samples = 4}};
+    const RenderOptions ways[] = {
+        {.samples = 1}, {.samples = 4}, {.samples = 2, .shade_every_sample = true}, {.threads = 3, .samples = 4}};
     for (RenderOptions options : ways) {
         Framebuffer one_pass(kWidth, kHeight), depth_first(kWidth, kHeight);
         options.depth_first = RenderOptions::DepthFirst::never;
@@ -28,7 +29,8 @@ void expect_same_either_way(const Scene& scene, const std::string& name) {
         options.depth_first = RenderOptions::DepthFirst::always;
         raster::Renderer first(options);
         first.render(depth_first, scene);
-        EXPECT_EQ(one_pass, depth_first) << name << " at " << options.samples << " samples, threads " << options.threads;
+        EXPECT_EQ(one_pass, depth_first) << name << " at " << options.samples << " samples, threads "
+                                         << options.threads;
         EXPECT_EQ(plain.coverage(), first.coverage()) << name << " at " << options.samples << " samples";
     }
 }
@@ -39,7 +41,8 @@ TEST(DepthFirst, EveryDiaryAndSeedSceneLooksTheSameDrawnDepthFirst) {
     for (const raster::SceneInfo& info : raster::diary_scenes()) {
         const raster::DiaryScene scene(info.name);
         expect_same_either_way(scene.still(kWidth, kHeight), std::string(info.name));
-        expect_same_either_way(scene.frame(kWidth, kHeight, info.frames / 3, info.frames), std::string(info.name) + " frame");
+        expect_same_either_way(scene.frame(kWidth, kHeight, info.frames / 3, info.frames),
+                               std::string(info.name) + " frame");
         raster::Scene transparent = scene.still(kWidth, kHeight);
         transparent.keep_depth = true;  // the coverage becomes the alpha of a transparent picture
         expect_same_either_way(transparent, std::string(info.name) + " kept depth");
@@ -47,7 +50,8 @@ TEST(DepthFirst, EveryDiaryAndSeedSceneLooksTheSameDrawnDepthFirst) {
     for (const raster::SeedSceneInfo& info : raster::seed_scenes()) {
         const raster::SeedScene scene(info.name);
         expect_same_either_way(scene.still(kWidth, kHeight), std::string(info.name));
-        expect_same_either_way(scene.frame(kWidth, kHeight, info.frames / 3, info.frames), std::string(info.name) + " frame");
+        expect_same_either_way(scene.frame(kWidth, kHeight, info.frames / 3, info.frames),
+                               std::string(info.name) + " frame");
     }
 }
 
@@ -57,6 +61,7 @@ TEST(DepthFirst, ChosenForOverlappingObjectsLitPerPixelOnly) {
     EXPECT_FALSE(chosen(raster::SeedScene("ptah").still(320, 240)));       // one object
     EXPECT_FALSE(chosen(raster::DiaryScene("shaders").still(320, 240)));   // two tori side by side
     raster::PerspectiveScene flat = raster::SeedScene("flythrough").still(320, 240);
-    for (raster::SceneObject& object : flat.objects) object.shading = raster::ShadingMethod::flat, object.texture = nullptr;
+    for (raster::SceneObject& object : flat.objects)
+        object.shading = raster::ShadingMethod::flat, object.texture = nullptr;
     EXPECT_FALSE(chosen(flat));  // cheap to shade: a second pass would cost more than it saves
 }

@@ -1,7 +1,7 @@
 // Framing, near and far, and depth follow the model's size: a model drawn at a thousandth or a
 // million times the size, or ten million units from the origin, gives the same picture.
-#include <raster/render/model_scene.hpp>
 #include <raster/io/obj_file.hpp>
+#include <raster/render/model_scene.hpp>
 
 #include <gtest/gtest.h>
 
@@ -18,7 +18,8 @@ std::string two_squares(double scale, double offset) {
     std::string obj;
     const auto vertex = [&](double x, double y, double z) {
         char line[128];
-        std::snprintf(line, sizeof line, "v %.17g %.17g %.17g\n", offset + x * scale, offset + y * scale, offset + z * scale);
+        std::snprintf(line, sizeof line, "v %.17g %.17g %.17g\n", offset + x * scale, offset + y * scale,
+                      offset + z * scale);
         obj += line;
     };
     for (const double z : {0.0, -0.5}) {
@@ -32,7 +33,8 @@ std::string two_squares(double scale, double offset) {
 }
 
 Framebuffer picture_of(double scale, double offset, bool orthographic) {
-    const raster::Model model = raster::parse_obj(two_squares(scale, offset), "newmtl green\nKd 0 1 0\nnewmtl red\nKd 1 0 0\n");
+    const raster::Model model =
+        raster::parse_obj(two_squares(scale, offset), "newmtl green\nKd 0 1 0\nnewmtl red\nKd 1 0 0\n");
     raster::ModelView view;
     view.shading = raster::ShadingMethod::unlit;
     view.orthographic = orthographic;

@@ -12,8 +12,10 @@ constexpr raster::Rgb kWhite{255, 255, 255};
 
 // A 2 x 2 square at z = 0 facing -Z, seen head on through a 90-degree pinhole from `eye_z`.
 raster::PerspectiveScene square_from(float eye_z) {
-    raster::Mesh square = raster::textured_quad({glm::vec3(-1, -1, 0), glm::vec3(1, -1, 0), glm::vec3(1, 1, 0), glm::vec3(-1, 1, 0)}, glm::vec3(0, 0, 1));
-    const auto camera = raster::PerspectiveCamera::look_at(9, 9, {0, 0, eye_z}, glm::vec3(0), {0, 1, 0}, {90.0, 0.1, 10.0});
+    raster::Mesh square = raster::textured_quad(
+        {glm::vec3(-1, -1, 0), glm::vec3(1, -1, 0), glm::vec3(1, 1, 0), glm::vec3(-1, 1, 0)}, glm::vec3(0, 0, 1));
+    const auto camera =
+        raster::PerspectiveCamera::look_at(9, 9, {0, 0, eye_z}, glm::vec3(0), {0, 1, 0}, {90.0, 0.1, 10.0});
     raster::SceneObject object{std::make_shared<const raster::Mesh>(std::move(square)), glm::mat4(1.0F),
                                raster::LinearMaterial{{}, {1, 1, 1}, {}, std::nullopt}};
     return {camera, raster::Rgb{0, 0, 0}, {}, {}, {object}};
@@ -25,15 +27,8 @@ TEST(RenderStyle, AWireframeDrawsTheEdgesOfEveryFacetFacingTheEye) {
     raster::Framebuffer image(9, 9);
     EXPECT_EQ(raster::draw_wireframe(image, square_from(-2.0F)), 2U);
     EXPECT_TRUE(test_support::looks_like(image,
-                                         {".........",
-                                          ".........",
-                                          "..#####..",
-                                          "..#..##..",
-                                          "..#.#.#..",
-                                          "..##..#..",
-                                          "..#####..",
-                                          ".........",
-                                          "........."},
+                                         {".........", ".........", "..#####..", "..#..##..", "..#.#.#..", "..##..#..",
+                                          "..#####..", ".........", "........."},
                                          {{'#', kWhite}}));
 }
 
@@ -46,23 +41,19 @@ TEST(RenderStyle, AWireframeCullsFacetsTurnedAway) {
 TEST(RenderStyle, AWireframeClipsEdgesThatPassBehindTheEye) {
     // A floor running from behind the eye to far ahead: its edges are cut at the near plane, so
     // they reach the bottom of the picture instead of wrapping round through infinity.
-    raster::Mesh floor = raster::textured_quad({glm::vec3(-1, -1, -5), glm::vec3(1, -1, -5), glm::vec3(1, -1, 5), glm::vec3(-1, -1, 5)}, glm::vec3(0, -2, 0));
+    raster::Mesh floor = raster::textured_quad(
+        {glm::vec3(-1, -1, -5), glm::vec3(1, -1, -5), glm::vec3(1, -1, 5), glm::vec3(-1, -1, 5)}, glm::vec3(0, -2, 0));
     const auto camera = raster::PerspectiveCamera::look_at(9, 9, {0, 0, 0}, {0, 0, 1}, {0, 1, 0}, {90.0, 0.1, 10.0});
-    raster::SceneObject object{std::make_shared<const raster::Mesh>(std::move(floor)), glm::mat4(1.0F), raster::IntensityMaterial{kWhite, 1.0F, 0.0F, std::nullopt}};
+    raster::SceneObject object{std::make_shared<const raster::Mesh>(std::move(floor)), glm::mat4(1.0F),
+                               raster::IntensityMaterial{kWhite, 1.0F, 0.0F, std::nullopt}};
     raster::Framebuffer image(9, 9);
-    EXPECT_EQ(raster::draw_wireframe(image, raster::PerspectiveScene{camera, raster::Rgb{0, 0, 0}, {}, {}, {object}}), 2U);
+    EXPECT_EQ(raster::draw_wireframe(image, raster::PerspectiveScene{camera, raster::Rgb{0, 0, 0}, {}, {}, {object}}),
+              2U);
     // The far edge at z = 5 is three pixels wide on row 5; the sides and the diagonal run down
     // out of the picture (the diagonal, cut at z = 0.1, stays near x = 0.2 NDC, column 5).
     EXPECT_TRUE(test_support::looks_like(image,
-                                         {".........",
-                                          ".........",
-                                          ".........",
-                                          ".........",
-                                          ".........",
-                                          "...###...",
-                                          "..#..##..",
-                                          ".#...#.#.",
-                                          "#....#..#"},
+                                         {".........", ".........", ".........", ".........", ".........", "...###...",
+                                          "..#..##..", ".#...#.#.", "#....#..#"},
                                          {{'#', kWhite}}));
 }
 

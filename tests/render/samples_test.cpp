@@ -1,10 +1,9 @@
 // Anti-aliasing by samples: each pass at a standard sample position, resolved in linear light.
+#include <raster/image/colour.hpp>
 #include <raster/render/samples.hpp>
 #include <raster/render/scene.hpp>
 #include <raster/scenes/diary_scenes.hpp>
-#include <raster/image/colour.hpp>
 
-#include <gtest/gtest.h>
 #include <cmath>
 #include <memory>
 #include <set>
@@ -12,6 +11,7 @@
 #include <string>
 #include <utility>
 #include <vector>
+#include <gtest/gtest.h>
 
 using raster::Framebuffer;
 
@@ -24,9 +24,11 @@ raster::Scene white_rectangle(bool transparent = false) {
     mesh->positions = {{-1.0F, -1.0F, 0.0F}, {0.0F, -1.0F, 0.0F}, {0.0F, 1.0F, 0.0F}, {-1.0F, 1.0F, 0.0F}};
     mesh->normals.assign(4, {0.0F, 0.0F, -1.0F});
     const glm::vec3 behind(-0.5F, 0.0F, 1.0F);  // normals face the camera at z = -1
-    mesh->facets = {raster::facet_facing_away(mesh->positions, 0, 1, 2, behind), raster::facet_facing_away(mesh->positions, 0, 2, 3, behind)};
+    mesh->facets = {raster::facet_facing_away(mesh->positions, 0, 1, 2, behind),
+                    raster::facet_facing_away(mesh->positions, 0, 2, 3, behind)};
     raster::Scene scene{raster::OrthoCamera(9, 9), {0, 0, 0}, {}, {}, {}};
-    scene.objects.push_back({mesh, glm::mat4(1.0F), raster::LinearMaterial{{0, 0, 0}, {1, 1, 1}, {0, 0, 0}, {}}, raster::ShadingMethod::unlit});
+    scene.objects.push_back({mesh, glm::mat4(1.0F), raster::LinearMaterial{{0, 0, 0}, {1, 1, 1}, {0, 0, 0}, {}},
+                             raster::ShadingMethod::unlit});
     scene.keep_depth = transparent;
     return scene;
 }
@@ -73,7 +75,8 @@ TEST(Samples, PositionsAreTheStandardPatternsOnTheSixteenthPixelGrid) {
         EXPECT_EQ(distinct.size(), offsets.size());
     }
     EXPECT_EQ(raster::sample_offsets(4)[0], glm::vec2(-2.0F / 16, -6.0F / 16));
-    for (const int wrong : {0, 3, 32, -4}) EXPECT_THROW((void)raster::sample_offsets(wrong), std::invalid_argument) << wrong;
+    for (const int wrong : {0, 3, 32, -4})
+        EXPECT_THROW((void)raster::sample_offsets(wrong), std::invalid_argument) << wrong;
 }
 
 TEST(Samples, EdgePixelsTakeTheShareOfSamplesCoveredInLinearLight) {
@@ -90,15 +93,8 @@ TEST(Samples, EdgePixelsTakeTheShareOfSamplesCoveredInLinearLight) {
                                                     }));
     // Four samples: each edge through pixel centres covers two of four, each corner one.
     const std::vector<std::string> four{
-        "+ooo+....",
-        "o###o....",
-        "o###o....",
-        "o###o....",
-        "o###o....",
-        "o###o....",
-        "o###o....",
-        "o###o....",
-        "+ooo+....",
+        "+ooo+....", "o###o....", "o###o....", "o###o....", "o###o....",
+        "o###o....", "o###o....", "o###o....", "+ooo+....",
     };
     EXPECT_EQ(shares(drawn(white_rectangle(), {.samples = 4})), four);
     // Half covered is linear 0.5, sRGB 188, not the 128 of a mean of bytes.
@@ -119,8 +115,8 @@ TEST(Samples, EachPassLooksFromItsSamplePositionInBothCameras) {
     const glm::dvec2 moved = flat.sampled_at(offset).screen_from_world(point) - flat.screen_from_world(point);
     EXPECT_NEAR(moved.x, -offset.x, 1e-9);
     EXPECT_NEAR(moved.y, -offset.y, 1e-9);
-    const raster::PerspectiveCamera lens = raster::PerspectiveCamera::look_at(64, 48, {0.0F, 0.0F, -3.0F}, {0.0F, 0.0F, 0.0F},
-                                                                             {0.0F, 1.0F, 0.0F}, {50.0, 0.1, 10.0});
+    const raster::PerspectiveCamera lens = raster::PerspectiveCamera::look_at(
+        64, 48, {0.0F, 0.0F, -3.0F}, {0.0F, 0.0F, 0.0F}, {0.0F, 1.0F, 0.0F}, {50.0, 0.1, 10.0});
     const glm::dvec4 clip = lens.clip_from_world(point);
     const glm::dvec2 seen = lens.sampled_at(offset).screen_from_clip(clip) - lens.screen_from_clip(clip);
     EXPECT_NEAR(seen.x, -offset.x, 1e-9);
@@ -143,7 +139,9 @@ TEST(Samples, TheSamePictureOnAnyNumberOfThreads) {
 // one flat colour the two agree exactly, in either camera; shading differs only inside pixels.
 TEST(Samples, MultisamplingCoversWhatSupersamplingCovers) {
     for (const int count : raster::kSampleCounts) {
-        EXPECT_EQ(drawn(white_rectangle(), {.samples = count}), drawn(white_rectangle(), {.samples = count, .shade_every_sample = true})) << count;
+        EXPECT_EQ(drawn(white_rectangle(), {.samples = count}),
+                  drawn(white_rectangle(), {.samples = count, .shade_every_sample = true}))
+            << count;
         const raster::PerspectiveScene lens = raster::in_perspective(white_rectangle(), 9, 9, 70.0);
         Framebuffer multi(9, 9), super(9, 9);
         raster::DepthBuffer depth;

@@ -1,10 +1,10 @@
-#include <raster/scenes/diary_scenes.hpp>
-#include <raster/shade/shaders.hpp>
-#include <raster/rasterize/draw_mesh.hpp>
-#include <raster/scenes/palette.hpp>
-#include <raster/render/scene.hpp>
-#include <raster/scenes/scenes.hpp>
 #include <raster/geometry/shapes.hpp>
+#include <raster/rasterize/draw_mesh.hpp>
+#include <raster/render/scene.hpp>
+#include <raster/scenes/diary_scenes.hpp>
+#include <raster/scenes/palette.hpp>
+#include <raster/scenes/scenes.hpp>
+#include <raster/shade/shaders.hpp>
 
 #include <glm/ext/matrix_transform.hpp>
 #include <gtest/gtest.h>
@@ -14,7 +14,9 @@ using raster::Scene;
 
 namespace {
 
-std::shared_ptr<const raster::Mesh> shared(raster::Mesh mesh) { return std::make_shared<const raster::Mesh>(std::move(mesh)); }
+std::shared_ptr<const raster::Mesh> shared(raster::Mesh mesh) {
+    return std::make_shared<const raster::Mesh>(std::move(mesh));
+}
 
 Scene one_object(std::shared_ptr<const raster::Mesh> mesh, const glm::mat4& model = glm::mat4(0.5F)) {
     Scene scene{raster::OrthoCamera(64, 48), {0, 0, 0}, {{{1, 1, -1}}}, {}, {}};
@@ -47,7 +49,8 @@ TEST(DepthRule, ALoneConvexMeshNeverTouchesTheDepthBuffer) {
         used.prepare(64, 48);
         tested.clear(scene.background);
         const raster::Mesh posed = raster::posed(*mesh, scene.objects[0].model);
-        const raster::IntensityLighting lighting(std::get<raster::IntensityMaterial>(scene.objects[0].material), scene.lights, -scene.camera.direction());
+        const raster::IntensityLighting lighting(std::get<raster::IntensityMaterial>(scene.objects[0].material),
+                                                 scene.lights, -scene.camera.direction());
         raster::draw_mesh({tested, &used}, scene.camera, posed, raster::PhongShader{&lighting});
         EXPECT_EQ(differing_pixels(image, tested), 0);
     }
@@ -73,8 +76,10 @@ TEST(DepthRule, SeveralObjectsOrANonConvexMeshGetOneAndNeedIt) {
         Framebuffer untested(64, 48);
         untested.clear(scene.background);
         for (const raster::SceneObject& object : scene.objects) {
-            const raster::IntensityLighting lighting(std::get<raster::IntensityMaterial>(object.material), scene.lights, -scene.camera.direction());
-            raster::draw_mesh({untested, nullptr}, scene.camera, raster::posed(*object.mesh, object.model), raster::PhongShader{&lighting});
+            const raster::IntensityLighting lighting(std::get<raster::IntensityMaterial>(object.material), scene.lights,
+                                                     -scene.camera.direction());
+            raster::draw_mesh({untested, nullptr}, scene.camera, raster::posed(*object.mesh, object.model),
+                              raster::PhongShader{&lighting});
         }
         EXPECT_GT(differing_pixels(image, untested), 0);
     }
@@ -106,13 +111,16 @@ TEST(DrawMesh, MalformedMeshesAndMismatchedBuffersAreClearErrors) {
     const raster::OrthoCamera camera(8, 8);
     raster::Mesh missing_vertex = raster::cube_mesh();
     missing_vertex.facets[3].corners[1] = 8;
-    EXPECT_THROW(raster::draw_mesh({image}, camera, missing_vertex, raster::FlatShader{&lighting}), std::invalid_argument);
+    EXPECT_THROW(raster::draw_mesh({image}, camera, missing_vertex, raster::FlatShader{&lighting}),
+                 std::invalid_argument);
     raster::Mesh missing_normals = raster::sphere(1);
     missing_normals.normals.pop_back();
-    EXPECT_THROW(raster::draw_mesh({image}, camera, missing_normals, raster::PhongShader{&lighting}), std::invalid_argument);
+    EXPECT_THROW(raster::draw_mesh({image}, camera, missing_normals, raster::PhongShader{&lighting}),
+                 std::invalid_argument);
     raster::DepthBuffer small;
     small.prepare(4, 8);
-    EXPECT_THROW(raster::draw_mesh({image, &small}, camera, raster::sphere(1), raster::PhongShader{&lighting}), std::invalid_argument);
+    EXPECT_THROW(raster::draw_mesh({image, &small}, camera, raster::sphere(1), raster::PhongShader{&lighting}),
+                 std::invalid_argument);
 }
 
 TEST(DiaryScenes, EveryNameBuildsAndUnknownNamesListTheChoices) {
@@ -126,7 +134,8 @@ TEST(DiaryScenes, EveryNameBuildsAndUnknownNamesListTheChoices) {
         (void)raster::DiaryScene("teapot");
         FAIL();
     } catch (const std::invalid_argument& error) {
-        EXPECT_NE(std::string(error.what()).find("no scene 'teapot'; the scenes are lit-cube, dodecahedron"), std::string::npos);
+        EXPECT_NE(std::string(error.what()).find("no scene 'teapot'; the scenes are lit-cube, dodecahedron"),
+                  std::string::npos);
     }
     EXPECT_EQ(raster::diary_scenes().back().name, "shaders");
 }

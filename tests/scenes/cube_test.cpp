@@ -1,19 +1,18 @@
+#include <raster/camera/ortho_camera.hpp>
 #include <raster/geometry/cube.hpp>
 #include <raster/rasterize/draw_cube.hpp>
-#include <raster/camera/ortho_camera.hpp>
 #include <raster/scenes/scenes.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <glm/ext/matrix_transform.hpp>
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
-#include <numbers>
 
 using raster::Cube;
 
 namespace {
-
 
 std::vector<std::size_t> faces_toward_camera(const Cube& cube) {
     return raster::faces_toward_camera(raster::OrthoCamera(800, 600), cube);
@@ -114,7 +113,8 @@ TEST(Cube, PosedNormalsStayPerpendicularToFacesUnderNonUniformScale) {
 
 TEST(Cube, EveryTumbleFrameShowsBetweenOneAndThreeFaces) {
     for (int frame = 0; frame < raster::kAnimationFrameCount; ++frame) {
-        const auto visible = faces_toward_camera(Cube().posed(raster::tumble_pose(frame, raster::kAnimationFrameCount)));
+        const auto visible =
+            faces_toward_camera(Cube().posed(raster::tumble_pose(frame, raster::kAnimationFrameCount)));
         EXPECT_GE(visible.size(), 1U) << "frame " << frame;
         EXPECT_LE(visible.size(), 3U) << "frame " << frame;
     }

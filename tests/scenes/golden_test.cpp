@@ -1,14 +1,14 @@
 // One table of golden pictures; stays whole so that every pinned output is listed in one place.
+#include <raster/io/webp.hpp>
 #include <raster/render/samples.hpp>
 #include <raster/scenes/diary_scenes.hpp>
 #include <raster/scenes/scenes.hpp>
-#include <raster/io/webp.hpp>
 
-#include <raster/render/model_scene.hpp>
-#include <raster/scenes/seed_scenes.hpp>
-#include <raster/scenes/island_world.hpp>
-#include <raster/render/render_style.hpp>
 #include <raster/io/obj_file.hpp>
+#include <raster/render/model_scene.hpp>
+#include <raster/render/render_style.hpp>
+#include <raster/scenes/island_world.hpp>
+#include <raster/scenes/seed_scenes.hpp>
 
 #include "support/golden.hpp"
 #include "support/model_files.hpp"
@@ -52,7 +52,8 @@ TEST(Golden, RadialSpokes) {
 }
 
 TEST(Golden, StillCubeInEachStyle) {
-    for (const CubeStyle style : {CubeStyle::filled, CubeStyle::wireframe, CubeStyle::culled_wireframe, CubeStyle::lit}) {
+    for (const CubeStyle style :
+         {CubeStyle::filled, CubeStyle::wireframe, CubeStyle::culled_wireframe, CubeStyle::lit}) {
         Framebuffer image = scene_frame();
         raster::render_still_cube(image, style);
         EXPECT_TRUE(matches_snapshot(image, "still-cube/" + style_name(style)));
@@ -96,7 +97,8 @@ TEST(Golden, ReadmeAnimationsShowWhatTheExporterDrawsToday) {
                                     [&](const raster::DecodedFrame& frame) {
                                         // libwebp merges identical neighbours into one longer frame
                                         const int shown = frame.duration_ms / raster::kFrameSpacingMs;
-                                        for (int i = 0; i < shown; ++i) digests.push_back(test_support::digest_of(frame.image));
+                                        for (int i = 0; i < shown; ++i)
+                                            digests.push_back(test_support::digest_of(frame.image));
                                         return true;
                                     });
         EXPECT_TRUE(test_support::matches_digests(digests, "animated-cube/" + style_name(style)))
@@ -142,16 +144,17 @@ TEST(Golden, EveryDiaryScenesAnimationEveryTenthFrame) {
 TEST(Golden, ReadmeTorusIsWhatAnimatedSceneDrawsToday) {
     if (std::getenv("RASTER_UPDATE_SNAPSHOTS") != nullptr) GTEST_SKIP() << "update-snapshots rewrites it next";
     const raster::DiaryScene torus("point-lights");  // the diary's last look: Phase 2's torus
-    Framebuffer expected(320, 240);  // as update-snapshots renders it: 180 frames at 25 fps
+    Framebuffer expected(320, 240);                  // as update-snapshots renders it: 180 frames at 25 fps
     raster::DepthBuffer depth;
     int shown = 0;
-    raster::for_each_webp_frame(std::string(RASTER_IMAGES_DIR) + "/animated-scene.webp", [&](const raster::DecodedFrame& frame) {
-        raster::render(expected, torus.frame(320, 240, shown, 180), depth);
-        EXPECT_EQ(frame.image, expected) << "doc/images/animated-scene.webp is stale at frame " << shown
-                                         << ": cmake --build --preset release --target update-snapshots";
-        shown += frame.duration_ms / 40;  // libwebp merges identical neighbours
-        return frame.image == expected;
-    });
+    raster::for_each_webp_frame(
+        std::string(RASTER_IMAGES_DIR) + "/animated-scene.webp", [&](const raster::DecodedFrame& frame) {
+            raster::render(expected, torus.frame(320, 240, shown, 180), depth);
+            EXPECT_EQ(frame.image, expected) << "doc/images/animated-scene.webp is stale at frame " << shown
+                                             << ": cmake --build --preset release --target update-snapshots";
+            shown += frame.duration_ms / 40;  // libwebp merges identical neighbours
+            return frame.image == expected;
+        });
     EXPECT_EQ(shown, 180);
 }
 
@@ -159,7 +162,8 @@ TEST(Golden, ReadmeTorusIsWhatAnimatedSceneDrawsToday) {
 // each shading, the orthographic view, a turntable frame, a low eye, nearest filtering, and one sample.
 TEST(Golden, ModelsThroughEachShadingAndView) {
     const test_support::ScratchDir dir;
-    const auto model = std::make_shared<const raster::Model>(raster::read_obj(test_support::write_crate_on_floor(dir.path())));
+    const auto model =
+        std::make_shared<const raster::Model>(raster::read_obj(test_support::write_crate_on_floor(dir.path())));
     struct Case {
         std::string name;
         raster::ModelView view;
@@ -167,8 +171,9 @@ TEST(Golden, ModelsThroughEachShadingAndView) {
         int samples = raster::kSmoothSamples;
     };
     std::vector<Case> cases;
-    for (const auto& [name, shading] : {std::pair{"phong", raster::ShadingMethod::phong}, std::pair{"gouraud", raster::ShadingMethod::gouraud},
-                                        std::pair{"flat", raster::ShadingMethod::flat}, std::pair{"unlit", raster::ShadingMethod::unlit}}) {
+    for (const auto& [name, shading] :
+         {std::pair{"phong", raster::ShadingMethod::phong}, std::pair{"gouraud", raster::ShadingMethod::gouraud},
+          std::pair{"flat", raster::ShadingMethod::flat}, std::pair{"unlit", raster::ShadingMethod::unlit}}) {
         raster::ModelView view;
         view.shading = shading;
         cases.push_back({name, view});
@@ -190,7 +195,8 @@ TEST(Golden, ModelsThroughEachShadingAndView) {
         if (c.name == "nearest") {
             for (raster::ModelPart& part : copy->parts) part.sampler.filter = raster::TextureFilter::nearest;
         }
-        raster::ModelStage(copy, c.view, image.width(), image.height()).render(image, depth, c.turn, {.samples = c.samples});
+        raster::ModelStage(copy, c.view, image.width(), image.height())
+            .render(image, depth, c.turn, {.samples = c.samples});
         EXPECT_TRUE(matches_snapshot(image, "models/crate-" + c.name));
     }
 }
@@ -211,9 +217,12 @@ TEST(Golden, ConcaveFacesAsTheirOutlines) {
     const double pi = 3.14159265358979;
     std::vector<std::pair<double, double>> ring;
     for (int i = 0; i <= 32; ++i) ring.emplace_back(std::cos(2 * pi * i / 32), std::sin(2 * pi * i / 32));
-    for (int i = 0; i <= 32; ++i) ring.emplace_back(0.55 * std::cos(-2 * pi * i / 32), 0.55 * std::sin(-2 * pi * i / 32));
+    for (int i = 0; i <= 32; ++i)
+        ring.emplace_back(0.55 * std::cos(-2 * pi * i / 32), 0.55 * std::sin(-2 * pi * i / 32));
     std::vector<std::pair<double, double>> star;
-    for (int i = 0; i < 10; ++i) star.emplace_back((i % 2 == 0 ? 1.0 : 0.4) * -std::sin(pi * i / 5), (i % 2 == 0 ? 1.0 : 0.4) * std::cos(pi * i / 5));
+    for (int i = 0; i < 10; ++i)
+        star.emplace_back((i % 2 == 0 ? 1.0 : 0.4) * -std::sin(pi * i / 5),
+                          (i % 2 == 0 ? 1.0 : 0.4) * std::cos(pi * i / 5));
     std::vector<std::pair<double, double>> comb{{-1, -1}, {1, -1}};  // counter-clockwise, as OBJ's fronts are
     for (int tooth = 4; tooth >= 0; --tooth) {
         const double left = -1 + 0.45 * tooth, right = left + 0.2;
@@ -231,7 +240,8 @@ TEST(Golden, ConcaveFacesAsTheirOutlines) {
     view.shading = raster::ShadingMethod::unlit;
     Framebuffer image(160, 160);
     raster::DepthBuffer depth;
-    raster::ModelStage(std::make_shared<raster::Model>(raster::parse_obj(obj, "")), view, image.width(), image.height()).render(image, depth, 0.0);
+    raster::ModelStage(std::make_shared<raster::Model>(raster::parse_obj(obj, "")), view, image.width(), image.height())
+        .render(image, depth, 0.0);
     EXPECT_TRUE(matches_snapshot(image, "models/concave-faces"));
 }
 
@@ -248,7 +258,8 @@ TEST(Golden, SeedScenes) {
     for (const int i : {100, 200, 300}) {
         Framebuffer image(160, 120);
         raster::DepthBuffer depth;
-        raster::render(image, fly.frame(image.width(), image.height(), i, fly.info().frames), depth, {.samples = raster::kSmoothSamples});
+        raster::render(image, fly.frame(image.width(), image.height(), i, fly.info().frames), depth,
+                       {.samples = raster::kSmoothSamples});
         EXPECT_TRUE(matches_snapshot(image, "seeds/flythrough-" + std::to_string(i)));
     }
 }
@@ -260,14 +271,16 @@ TEST(Golden, IslandWorld) {
     for (const raster::IslandElement& element : raster::island_elements()) {
         Framebuffer image(160, 120);
         raster::DepthBuffer depth;
-        raster::render(image, world.view(element.name, image.width(), image.height()), depth, {.samples = raster::kSmoothSamples});
+        raster::render(image, world.view(element.name, image.width(), image.height()), depth,
+                       {.samples = raster::kSmoothSamples});
         EXPECT_TRUE(matches_snapshot(image, "islands/" + std::string(element.name)));
     }
     const raster::SeedScene islands("islands");
     for (const int i : {80, 250, 400}) {
         Framebuffer image(160, 120);
         raster::DepthBuffer depth;
-        raster::render(image, islands.frame(image.width(), image.height(), i, islands.info().frames), depth, {.samples = raster::kSmoothSamples});
+        raster::render(image, islands.frame(image.width(), image.height(), i, islands.info().frames), depth,
+                       {.samples = raster::kSmoothSamples});
         EXPECT_TRUE(matches_snapshot(image, "islands/flight-" + std::to_string(i)));
     }
     Framebuffer flat(160, 120), wireframe(160, 120);

@@ -15,14 +15,17 @@ TEST(Primitives, AnOctagonalPrismIsClosedAndFacesOutward) {
     EXPECT_EQ(prism.facets.size(), 8U * 2U + 2U * 8U);  // eight sides of two triangles, two caps of eight
     EXPECT_TRUE(prism.convex);
     for (const raster::Facet& facet : prism.facets) {
-        const glm::vec3 centre = (prism.positions[facet.corners[0]] + prism.positions[facet.corners[1]] + prism.positions[facet.corners[2]]) / 3.0F;
+        const glm::vec3 centre = (prism.positions[facet.corners[0]] + prism.positions[facet.corners[1]] +
+                                  prism.positions[facet.corners[2]]) /
+                                 3.0F;
         EXPECT_GT(glm::dot(facet.normal, centre), 0.0F);
     }
     for (const glm::vec3 p : prism.positions) EXPECT_LE(glm::length(glm::vec2(p.x, p.y)), 1.0F + 1e-6F);
 }
 
 TEST(Primitives, AQuadFacesAwayFromInsideWithCoordinatesAlongItsEdges) {
-    const raster::Mesh quad = raster::textured_quad({glm::vec3(0, 0, 0), glm::vec3(4, 0, 0), glm::vec3(4, 2, 0), glm::vec3(0, 2, 0)}, glm::vec3(0, 0, 1), 2.0F);
+    const raster::Mesh quad = raster::textured_quad(
+        {glm::vec3(0, 0, 0), glm::vec3(4, 0, 0), glm::vec3(4, 2, 0), glm::vec3(0, 2, 0)}, glm::vec3(0, 0, 1), 2.0F);
     ASSERT_EQ(quad.facets.size(), 2U);
     for (const raster::Facet& facet : quad.facets) EXPECT_EQ(facet.normal, glm::vec3(0, 0, -1));
     EXPECT_EQ(quad.uvs[0], glm::vec2(0, 0));
@@ -59,8 +62,8 @@ TEST(IslandWorld, EveryElementHasAViewAndAnUnknownOneIsNamed) {
         const raster::PerspectiveScene view = world.view(element.name, 64, 48);
         EXPECT_TRUE(view.darkening.has_value());
     }
-    for (const char* name : {"canyon", "waterfall", "river", "mountains", "beach", "house", "bridge", "trees", "airport", "parked-plane",
-                             "orbiting-plane", "boat"}) {
+    for (const char* name : {"canyon", "waterfall", "river", "mountains", "beach", "house", "bridge", "trees",
+                             "airport", "parked-plane", "orbiting-plane", "boat"}) {
         EXPECT_EQ(names.count(name), 1U) << name;
     }
     try {
@@ -81,11 +84,13 @@ TEST(IslandWorld, TheFlightLoopsAndTheBoatPlanesPropellerAndWaterMove) {
     // The fixed world is shared; the last objects (water, parked plane and propeller, flying
     // plane and propeller, hull, cabin) each move or flow from one frame to the next.
     const std::size_t moving = 7;
-    for (std::size_t k = 0; k + moving < first.objects.size(); ++k) EXPECT_EQ(first.objects[k].mesh, next.objects[k].mesh);
+    for (std::size_t k = 0; k + moving < first.objects.size(); ++k)
+        EXPECT_EQ(first.objects[k].mesh, next.objects[k].mesh);
     const std::size_t water = first.objects.size() - moving;
     EXPECT_NE(first.objects[water].mesh->uvs, next.objects[water].mesh->uvs);
     EXPECT_EQ(first.objects[water + 1].model, next.objects[water + 1].model);  // the parked plane stays
-    for (std::size_t k = water + 2; k < first.objects.size(); ++k) EXPECT_NE(first.objects[k].model, next.objects[k].model) << k;
+    for (std::size_t k = water + 2; k < first.objects.size(); ++k)
+        EXPECT_NE(first.objects[k].model, next.objects[k].model) << k;
 }
 
 TEST(IslandWorld, TheFlightStaysAboveTheGroundAndInsideTheWorld) {

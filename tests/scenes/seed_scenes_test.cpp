@@ -1,7 +1,7 @@
 // The Ptah and raster-engine scenes, their primitives, and depth darkening.
-#include <raster/shade/linear_lighting.hpp>
 #include <raster/geometry/primitives.hpp>
 #include <raster/scenes/seed_scenes.hpp>
+#include <raster/shade/linear_lighting.hpp>
 
 #include <gtest/gtest.h>
 
@@ -15,7 +15,8 @@ void expect_outward(const raster::Mesh& mesh, glm::vec3 inside) {
     ASSERT_EQ(mesh.uvs.size(), mesh.positions.size());
     ASSERT_EQ(mesh.normals.size(), mesh.positions.size());
     for (const raster::Facet& facet : mesh.facets) {
-        const glm::vec3 a = mesh.positions[facet.corners[0]], b = mesh.positions[facet.corners[1]], c = mesh.positions[facet.corners[2]];
+        const glm::vec3 a = mesh.positions[facet.corners[0]], b = mesh.positions[facet.corners[1]],
+                        c = mesh.positions[facet.corners[2]];
         EXPECT_EQ(raster::facet_normal(a, b, c), facet.normal);
         EXPECT_GT(glm::dot(facet.normal, (a + b + c) / 3.0F - inside), 0.0F);
     }

@@ -53,7 +53,8 @@ TEST(BlinnPhong, SpecularFollowsTheHalfVector) {
 
 TEST(BlinnPhong, MatteSurfacesDoNotDependOnTheViewer) {
     const IntensityMaterial matte = IntensityMaterial::matte(kBlue, 0.25F);
-    EXPECT_FLOAT_EQ(intensity(matte, {1, 1, -1}, {0, 0, -1}, {0, 0, -1}), intensity(matte, {1, 1, -1}, {0, 0, -1}, {1, 0, 0}));
+    EXPECT_FLOAT_EQ(intensity(matte, {1, 1, -1}, {0, 0, -1}, {0, 0, -1}),
+                    intensity(matte, {1, 1, -1}, {0, 0, -1}, {1, 0, 0}));
 }
 
 TEST(IntensityLighting, UnusableLightsAddNothingAndNoNaN) {
@@ -70,7 +71,8 @@ TEST(IntensityLighting, UnusableLightsAddNothingAndNoNaN) {
     EXPECT_FLOAT_EQ(intensity(IntensityMaterial::shiny(kBlue, 0.15F, 0.0F), {0, 0, -1}, {0, 0, 0}), 0.15F);
     // A negative shininess would make pow(0, s) infinite; it counts as 0.
     const IntensityMaterial negative = IntensityMaterial::shiny(kBlue, 0.0F, -3.0F);
-    EXPECT_FLOAT_EQ(intensity(negative, {0, 0, -1}, {1, 0, 0}, {0, 0, -1}), intensity(IntensityMaterial::shiny(kBlue, 0.0F, 0.0F), {0, 0, -1}, {1, 0, 0}, {0, 0, -1}));
+    EXPECT_FLOAT_EQ(intensity(negative, {0, 0, -1}, {1, 0, 0}, {0, 0, -1}),
+                    intensity(IntensityMaterial::shiny(kBlue, 0.0F, 0.0F), {0, 0, -1}, {1, 0, 0}, {0, 0, -1}));
     EXPECT_TRUE(std::isfinite(intensity(negative, {0, 0, 1}, {0, 0, -1}, {0, 0, 1})));
 }
 

@@ -9,8 +9,8 @@
 using raster::DirectionalLight;
 using raster::Falloff;
 using raster::LinearLighting;
-using raster::LinearRgb;
 using raster::LinearMaterial;
+using raster::LinearRgb;
 using raster::PointLight;
 
 namespace {
@@ -51,7 +51,7 @@ TEST(LinearLighting, DirectionalAndPointLightsAgreeOnLambert) {
 
 TEST(LinearLighting, PointLightsDependOnTheSurfacePosition) {
     const std::vector<PointLight> lamp{{{0, 1, 0}, 1.0F, Falloff{}}};
-    EXPECT_NEAR(diffuse_at({0, 0, 0}, kUp, {}, lamp), 1.0F, 1e-6F);              // straight below
+    EXPECT_NEAR(diffuse_at({0, 0, 0}, kUp, {}, lamp), 1.0F, 1e-6F);                    // straight below
     EXPECT_NEAR(diffuse_at({1, 0, 0}, kUp, {}, lamp), 1.0F / std::sqrt(2.0F), 1e-6F);  // off to the side
     // The highlight follows the half vector between the light and the eye at each point.
     const LinearMaterial shiny{{0, 0, 0}, {0, 0, 0}, {1, 1, 1}, 30.0F};
@@ -70,7 +70,8 @@ TEST(LinearLighting, FalloffAtKnownDistances) {
     EXPECT_NEAR(diffuse_at(kOrigin, kUp, {}, {{{0, 4, 0}, 1.0F, linear}}), 1.0F / 8.0F, 1e-6F);
     // Falloff scales the highlight as well as the diffuse light.
     const LinearMaterial both{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 8.0F};
-    const LinearRgb c = LinearLighting(both, {}, std::vector<PointLight>{{{0, 2, 0}, 1.0F, diary}}, kUp).shade(kOrigin, kUp);
+    const LinearRgb c =
+        LinearLighting(both, {}, std::vector<PointLight>{{{0, 2, 0}, 1.0F, diary}}, kUp).shade(kOrigin, kUp);
     EXPECT_NEAR(c.r, 0.2F, 1e-6F);
     EXPECT_NEAR(c.g, 0.2F, 1e-6F);
 }
@@ -91,7 +92,8 @@ TEST(LinearLighting, IntensityScalesDiffuseAndSpecularButNotEmissive) {
     const glm::vec3 normal = glm::normalize(glm::vec3(1, 2, -1));
     for (const bool point : {false, true}) {
         const auto lit = [&](float intensity) {
-            if (point) return LinearLighting(m, {}, std::vector<PointLight>{{{1, 2, -1}, intensity, Falloff{}}}, kToEye);
+            if (point)
+                return LinearLighting(m, {}, std::vector<PointLight>{{{1, 2, -1}, intensity, Falloff{}}}, kToEye);
             return LinearLighting(m, std::vector<DirectionalLight>{{{1, 2, -1}, intensity}}, {}, kToEye);
         };
         const LinearRgb once = lit(1.0F).shade(kOrigin, normal) - m.emissive;
@@ -123,14 +125,15 @@ TEST(LinearLighting, OddLightsGiveDefinedResultsNeverNaN) {
     EXPECT_EQ(close, LinearLighting::kBrightest);
     // A negative intensity takes light away; the write clamps the result at black.
     EXPECT_NEAR(diffuse_at(kOrigin, kUp, {{kUp, 1.0F}}, {{{0, 1, 0}, -0.25F, none}}), 0.75F, 1e-6F);
-    EXPECT_EQ(raster::srgb_from_linear(LinearLighting(white_diffuse(), {}, std::vector<PointLight>{{{0, 1, 0}, -1.0F, none}}, kToEye)
-                                           .shade(kOrigin, kUp)),
+    EXPECT_EQ(raster::srgb_from_linear(
+                  LinearLighting(white_diffuse(), {}, std::vector<PointLight>{{{0, 1, 0}, -1.0F, none}}, kToEye)
+                      .shade(kOrigin, kUp)),
               (raster::Rgb{0, 0, 0}));
     // Unusable lights add nothing: non-finite positions and intensities, broken falloffs.
-    for (const PointLight& broken : {PointLight{{kNaN, 1, 0}, 1.0F, none}, PointLight{{0, kInf, 0}, 1.0F, none},
-                                     PointLight{{0, 1, 0}, kNaN, none}, PointLight{{0, 1, 0}, kInf, none},
-                                     PointLight{{0, 1, 0}, 1.0F, {0, 0, 0}}, PointLight{{0, 1, 0}, 1.0F, {-1, 0, 1}},
-                                     PointLight{{0, 1, 0}, 1.0F, {1, kNaN, 0}}}) {
+    for (const PointLight& broken :
+         {PointLight{{kNaN, 1, 0}, 1.0F, none}, PointLight{{0, kInf, 0}, 1.0F, none}, PointLight{{0, 1, 0}, kNaN, none},
+          PointLight{{0, 1, 0}, kInf, none}, PointLight{{0, 1, 0}, 1.0F, {0, 0, 0}},
+          PointLight{{0, 1, 0}, 1.0F, {-1, 0, 1}}, PointLight{{0, 1, 0}, 1.0F, {1, kNaN, 0}}}) {
         EXPECT_EQ(diffuse_at(kOrigin, kUp, {}, {broken}), 0.0F);
     }
     // Huge distances: with falloff the light fades to nothing, without it the direction holds.
@@ -140,22 +143,27 @@ TEST(LinearLighting, OddLightsGiveDefinedResultsNeverNaN) {
     EXPECT_EQ(diffuse_at({0, -3e38F, 0}, kUp, {}, {{{0, 3e38F, 0}, 1.0F, {1.0F, 1.0F, 0.0F}}}), 0.0F);
     // A zero normal is "no normal": emissive only, whatever shines.
     const LinearMaterial glowing{{0.1F, 0.2F, 0.3F}, {1, 1, 1}, {1, 1, 1}, 0.0F};
-    EXPECT_EQ(LinearLighting(glowing, std::vector<DirectionalLight>{{kUp, 1.0F}}, {}, kToEye).shade(kOrigin, glm::vec3(0.0F)),
-              glowing.emissive);
+    EXPECT_EQ(
+        LinearLighting(glowing, std::vector<DirectionalLight>{{kUp, 1.0F}}, {}, kToEye).shade(kOrigin, glm::vec3(0.0F)),
+        glowing.emissive);
     // An infinite shininess, where a dot of unit vectors rounding above 1 would give infinity.
     const LinearMaterial mirror{{0, 0, 0}, {0, 0, 0}, {1, 1, 1}, kInf};
     for (int i = 0; i < 1000; ++i) {
         const auto t = static_cast<float>(i);
-        const glm::vec3 n = glm::normalize(glm::vec3(std::sin(t * 0.37F), std::cos(t * 0.71F), std::sin(t * 1.3F) - 1.5F));
+        const glm::vec3 n =
+            glm::normalize(glm::vec3(std::sin(t * 0.37F), std::cos(t * 0.71F), std::sin(t * 1.3F) - 1.5F));
         const std::vector<PointLight> faded{{{0, 3e38F, 0}, 1.0F, inverse_square}};
         const LinearLighting lit(mirror, std::vector<DirectionalLight>{{n, 1.0F}, {-n, -1.0F}}, faded, n);
         ASSERT_TRUE(finite(lit.shade(kOrigin, n))) << i;
     }
     // Every combination above with a shininess, several lights at once: finite.
-    const std::vector<PointLight> all{{kOrigin, 1e30F, inverse_square}, {{0, 1e-30F, 0}, 3e38F, inverse_square},
-                                      {{0, 3e38F, 0}, -3e38F, none}, {{0, 1, 0}, 1.0F, inverse_square}};
+    const std::vector<PointLight> all{{kOrigin, 1e30F, inverse_square},
+                                      {{0, 1e-30F, 0}, 3e38F, inverse_square},
+                                      {{0, 3e38F, 0}, -3e38F, none},
+                                      {{0, 1, 0}, 1.0F, inverse_square}};
     const LinearMaterial shiny{{0, 0, 0}, {1, 1, 1}, {1, 1, 1}, 0.5F};
     for (const glm::vec3 normal : {kUp, -kUp, glm::vec3(1, 0, 0)}) {
-        EXPECT_TRUE(finite(LinearLighting(shiny, std::vector<DirectionalLight>{{kUp, 3e38F}}, all, kToEye).shade(kOrigin, normal)));
+        EXPECT_TRUE(finite(
+            LinearLighting(shiny, std::vector<DirectionalLight>{{kUp, 3e38F}}, all, kToEye).shade(kOrigin, normal)));
     }
 }

@@ -1,14 +1,14 @@
 // The Phase 2 shaders on the one rasterizer: what each interpolates shows in the pictures.
+#include <raster/geometry/shapes.hpp>
 #include <raster/rasterize/draw_mesh.hpp>
 #include <raster/render/scene.hpp>
-#include <raster/geometry/shapes.hpp>
 
-#include <glm/ext/matrix_transform.hpp>
-#include <gtest/gtest.h>
 #include <memory>
 #include <numbers>
 #include <string>
 #include <vector>
+#include <glm/ext/matrix_transform.hpp>
+#include <gtest/gtest.h>
 
 using raster::Framebuffer;
 
@@ -22,7 +22,8 @@ raster::Scene lamp_over_square(raster::ShadingMethod method) {
     const auto square = std::make_shared<const raster::Mesh>(
         raster::ground_quad({-1.0F, 0.0F, -1.0F}, {1.0F, 0.0F, -1.0F}, {1.0F, 0.0F, 1.0F}, {-1.0F, 0.0F, 1.0F}));
     const glm::mat4 facing_camera = glm::rotate(glm::mat4(1.0F), -std::numbers::pi_v<float> / 2, {1.0F, 0.0F, 0.0F});
-    scene.objects.push_back({square, facing_camera, raster::LinearMaterial{{0, 0, 0}, {1, 1, 1}, {0, 0, 0}, {}}, method});
+    scene.objects.push_back(
+        {square, facing_camera, raster::LinearMaterial{{0, 0, 0}, {1, 1, 1}, {0, 0, 0}, {}}, method});
     return scene;
 }
 

@@ -1,8 +1,8 @@
 // Textures: coordinates, filters, addressing, mip levels, and reading image files.
 #include <raster/image/colour.hpp>
-#include <raster/shade/texture.hpp>
 #include <raster/io/texture_file.hpp>
 #include <raster/io/webp.hpp>
+#include <raster/shade/texture.hpp>
 
 #include "support/encoded_images.hpp"
 #include "support/model_files.hpp"
@@ -98,9 +98,11 @@ TEST(Texture, TrilinearPicksTheLevelWhoseTexelsMatchThePixelStep) {
     EXPECT_EQ(at(texture, 0.5F * texel, 1.0F - 0.5F * texel, trilinear, {{texel, 0.0F}, {0.0F, texel}}), kBlack);
     // Two texels per pixel: level 1, where the checkerboard has become grey.
     const std::uint8_t grey = raster::srgb_byte_from_linear(0.5F);
-    EXPECT_EQ(at(texture, 0.5F * texel, 1.0F - 0.5F * texel, trilinear, {{2 * texel, 0.0F}, {0.0F, 2 * texel}}), (Rgb{grey, grey, grey}));
+    EXPECT_EQ(at(texture, 0.5F * texel, 1.0F - 0.5F * texel, trilinear, {{2 * texel, 0.0F}, {0.0F, 2 * texel}}),
+              (Rgb{grey, grey, grey}));
     // Bilinear ignores the footprint.
-    EXPECT_EQ(at(texture, 0.5F * texel, 1.0F - 0.5F * texel, kBilinear, {{2 * texel, 0.0F}, {0.0F, 2 * texel}}), kBlack);
+    EXPECT_EQ(at(texture, 0.5F * texel, 1.0F - 0.5F * texel, kBilinear, {{2 * texel, 0.0F}, {0.0F, 2 * texel}}),
+              kBlack);
 }
 
 TEST(Texture, BetweenLevelsTrilinearBlendsByTheFractionOfTheLevel) {
@@ -113,13 +115,15 @@ TEST(Texture, BetweenLevelsTrilinearBlendsByTheFractionOfTheLevel) {
     const float step = 3.0F / 4.0F;  // three level-0 texels a pixel: lambda = log2(3) = 1.585
     const LinearRgb c = texture.sample({0.25F, 0.5F}, {{step, 0.0F}, {0.0F, step}}, trilinear);
     const float blend = std::log2(3.0F) - 1.0F;
-    const float grey = raster::linear_from_srgb(texture.level(2).pixel(0, 0)).r;  // 0.5, as the nearest sRGB byte holds it
-    EXPECT_NEAR(c.r, grey * blend, 1e-5F);  // level 1 black, level 2 grey
+    const float grey =
+        raster::linear_from_srgb(texture.level(2).pixel(0, 0)).r;  // 0.5, as the nearest sRGB byte holds it
+    EXPECT_NEAR(c.r, grey * blend, 1e-5F);                         // level 1 black, level 2 grey
     EXPECT_NEAR(c.g, c.r, 1e-6F);
 }
 
 TEST(TextureFile, FormatsBeyondTheDocumentedOnesAreRefused) {
-    for (const std::string& head : {std::string("GIF89a\x01\0\x01\0", 10), std::string("8BPS\0\x01"), std::string("P6\n1 1\n255\n\0\0\0", 14)}) {
+    for (const std::string& head :
+         {std::string("GIF89a\x01\0\x01\0", 10), std::string("8BPS\0\x01"), std::string("P6\n1 1\n255\n\0\0\0", 14)}) {
         const std::vector<std::uint8_t> bytes(head.begin(), head.end());
         EXPECT_THROW((void)raster::decode_texture(bytes), std::runtime_error) << head;
     }
@@ -157,7 +161,8 @@ TEST(TextureFile, ImagesOverTheLimitAreRefusedFromTheirHeader) {
         (void)raster::read_texture(dir / "wide.png", 100);
         FAIL() << "a 128-texel image passed a 100-texel limit";
     } catch (const std::runtime_error& error) {
-        EXPECT_NE(std::string(error.what()).find("64x2, more than the 100 texels allowed"), std::string::npos) << error.what();
+        EXPECT_NE(std::string(error.what()).find("64x2, more than the 100 texels allowed"), std::string::npos)
+            << error.what();
     }
     // A BMP header claiming 30000 x 30000 pixels in 54 bytes: refused without allocating them.
     Framebuffer tiny(1, 1);
@@ -208,32 +213,41 @@ TEST(TextureFile, AnImageOfAnyFormatCutShortIsRefusedAsTruncated) {
     test_support::Bytes pixels;
     for (int i = 0; i < 40 * 30 * 3; ++i) pixels.push_back(static_cast<std::uint8_t>(i * 37 % 251));
     std::vector<std::pair<std::string, test_support::Bytes>> files{
-        {"t.png", test_support::encode_png(pixels, 40, 30, 3)},    {"t.jpg", test_support::encode_jpeg(pixels, 40, 30, 3)},
-        {"t.bmp", test_support::encode_bmp(pixels, 40, 30, 3)},    {"t.tga", test_support::encode_tga(pixels, 40, 30, 3, false)},
+        {"t.png", test_support::encode_png(pixels, 40, 30, 3)},
+        {"t.jpg", test_support::encode_jpeg(pixels, 40, 30, 3)},
+        {"t.bmp", test_support::encode_bmp(pixels, 40, 30, 3)},
+        {"t.tga", test_support::encode_tga(pixels, 40, 30, 3, false)},
         {"rle.tga", test_support::encode_tga(pixels, 40, 30, 3, true)}};
     raster::write_webp_still(Framebuffer(40, 30, pixels), dir / "t.webp");
     const std::string webp = test_support::read_text(dir / "t.webp");
     files.emplace_back("t.webp", test_support::Bytes(webp.begin(), webp.end()));
-    const std::map<std::string, std::string> format{{"t.png", "PNG"}, {"t.jpg", "JPEG"}, {"t.bmp", "BMP"},
-                                                     {"t.tga", "TGA"}, {"rle.tga", "TGA"}, {"t.webp", "WebP"}};
+    const std::map<std::string, std::string> format{{"t.png", "PNG"}, {"t.jpg", "JPEG"},  {"t.bmp", "BMP"},
+                                                    {"t.tga", "TGA"}, {"rle.tga", "TGA"}, {"t.webp", "WebP"}};
     for (const auto& [name, bytes] : files) {
         test_support::write_text(dir / name, std::string(bytes.begin(), bytes.end()));
         EXPECT_EQ(texture_error(dir / name), "") << name;  // whole, it reads
-        test_support::write_text(dir / ("cut-" + name), std::string(bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(bytes.size() * 3 / 5)));
-        EXPECT_EQ(texture_error(dir / ("cut-" + name)),
-                  (dir / ("cut-" + name)).string() + ": truncated image: the " + format.at(name) + " data ends before the picture does");
+        test_support::write_text(
+            dir / ("cut-" + name),
+            std::string(bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(bytes.size() * 3 / 5)));
+        EXPECT_EQ(texture_error(dir / ("cut-" + name)), (dir / ("cut-" + name)).string() + ": truncated image: the " +
+                                                            format.at(name) + " data ends before the picture does");
     }
     // A TGA header alone that claims 4000 x 4000 texels: stb_image would fill them with black.
-    const std::string header{0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, static_cast<char>(0xa0), 0x0f, static_cast<char>(0xa0), 0x0f, 24, 0x20};
+    const std::string header{
+        0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, static_cast<char>(0xa0), 0x0f, static_cast<char>(0xa0), 0x0f, 24, 0x20};
     test_support::write_text(dir / "header.tga", header);
-    EXPECT_EQ(texture_error(dir / "header.tga"), (dir / "header.tga").string() + ": truncated image: the TGA data ends before the picture does");
+    EXPECT_EQ(texture_error(dir / "header.tga"),
+              (dir / "header.tga").string() + ": truncated image: the TGA data ends before the picture does");
 }
 
 TEST(TextureFile, APngHeaderClaimingMoreTexelsThanAllowedSaysItsSize) {
     const test_support::ScratchDir dir;
     const test_support::Bytes small = test_support::encode_png(test_support::Bytes(3 * 4, 0), 2, 2, 3);
     std::string png(small.begin(), small.end());
-    png.replace(16, 8, std::string{0, 0, static_cast<char>(0xff), static_cast<char>(0xff), 0, 0, static_cast<char>(0xff), static_cast<char>(0xff)});
+    png.replace(16, 8,
+                std::string{0, 0, static_cast<char>(0xff), static_cast<char>(0xff), 0, 0, static_cast<char>(0xff),
+                            static_cast<char>(0xff)});
     test_support::write_text(dir / "huge.png", png);
-    EXPECT_EQ(texture_error(dir / "huge.png"), (dir / "huge.png").string() + ": image is 65535x65535, more than the 16777216 texels allowed");
+    EXPECT_EQ(texture_error(dir / "huge.png"),
+              (dir / "huge.png").string() + ": image is 65535x65535, more than the 16777216 texels allowed");
 }

@@ -1,16 +1,15 @@
 // Vertex colours: each corner's colour interpolated in linear light, multiplying the diffuse colour.
+#include <raster/geometry/shapes.hpp>
 #include <raster/image/colour.hpp>
 #include <raster/render/scene.hpp>
-#include <raster/geometry/shapes.hpp>
 
-
-#include <glm/ext/matrix_transform.hpp>
-#include <gtest/gtest.h>
 #include <cstdlib>
 #include <memory>
 #include <numbers>
 #include <string>
 #include <vector>
+#include <glm/ext/matrix_transform.hpp>
+#include <gtest/gtest.h>
 
 using raster::Framebuffer;
 using raster::LinearRgb;
@@ -23,7 +22,8 @@ Framebuffer red_to_blue(raster::ShadingMethod method, LinearRgb diffuse = {1, 1,
     raster::Scene scene{raster::OrthoCamera(9, 9), {0, 0, 0}, {{{0.0F, 0.0F, -1.0F}, 1.0F}}, {}, {}};
     auto square = std::make_shared<raster::Mesh>(
         raster::ground_quad({-1.0F, 0.0F, -1.0F}, {1.0F, 0.0F, -1.0F}, {1.0F, 0.0F, 1.0F}, {-1.0F, 0.0F, 1.0F}));
-    for (const glm::vec3& p : square->positions) square->colours.push_back(p.x < 0.0F ? LinearRgb{1, 0, 0} : LinearRgb{0, 0, 1});
+    for (const glm::vec3& p : square->positions)
+        square->colours.push_back(p.x < 0.0F ? LinearRgb{1, 0, 0} : LinearRgb{0, 0, 1});
     const glm::mat4 facing_camera = glm::rotate(glm::mat4(1.0F), -std::numbers::pi_v<float> / 2, {1.0F, 0.0F, 0.0F});
     scene.objects.push_back({square, facing_camera, raster::LinearMaterial{{0, 0, 0}, diffuse, {0, 0, 0}, {}}, method});
     Framebuffer image(9, 9);

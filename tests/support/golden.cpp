@@ -27,8 +27,7 @@ fs::path diff_path(const std::string& name, const std::string& suffix) {
 }
 
 std::string describe(raster::Rgb colour) {
-    return "(" + std::to_string(colour.r) + ", " + std::to_string(colour.g) + ", " +
-           std::to_string(colour.b) + ")";
+    return "(" + std::to_string(colour.r) + ", " + std::to_string(colour.g) + ", " + std::to_string(colour.b) + ")";
 }
 
 const char* kRegenerate = "if the change is intended: cmake --build <build> --target update-snapshots";
@@ -40,10 +39,10 @@ raster::Framebuffer diff_image(const raster::Framebuffer& expected, const raster
         for (int x = 0; x < actual.width(); ++x) {
             const raster::Rgb a = actual.pixel(x, y);
             const bool same = expected.pixel(x, y) == a;
-            diff.set_pixel(x, y, same ? raster::Rgb{static_cast<std::uint8_t>(a.r / 4),
-                                                    static_cast<std::uint8_t>(a.g / 4),
-                                                    static_cast<std::uint8_t>(a.b / 4)}
-                                      : raster::Rgb{255, 0, 255});
+            diff.set_pixel(x, y,
+                           same ? raster::Rgb{static_cast<std::uint8_t>(a.r / 4), static_cast<std::uint8_t>(a.g / 4),
+                                              static_cast<std::uint8_t>(a.b / 4)}
+                                : raster::Rgb{255, 0, 255});
         }
     }
     return diff;
@@ -65,8 +64,8 @@ raster::Framebuffer diff_image(const raster::Framebuffer& expected, const raster
     const raster::Framebuffer& expected = decoded.frames.at(0).image;
     if (expected.width() != actual.width() || expected.height() != actual.height()) {
         return ::testing::AssertionFailure()
-               << name << ": snapshot is " << expected.width() << "x" << expected.height()
-               << ", render is " << actual.width() << "x" << actual.height() << "; " << kRegenerate;
+               << name << ": snapshot is " << expected.width() << "x" << expected.height() << ", render is "
+               << actual.width() << "x" << actual.height() << "; " << kRegenerate;
     }
     long differing = 0;
     std::string first;
@@ -84,10 +83,9 @@ raster::Framebuffer diff_image(const raster::Framebuffer& expected, const raster
     const fs::path diff_file = diff_path(name, ".diff.webp");
     raster::write_webp_still(actual, actual_file, raster::Effort::fast);
     raster::write_webp_still(diff_image(expected, actual), diff_file, raster::Effort::fast);
-    return ::testing::AssertionFailure()
-           << name << ": " << differing << " pixels differ; first at " << first
-           << "\n  actual: " << actual_file.string() << "\n  diff:   " << diff_file.string()
-           << "\n  " << kRegenerate;
+    return ::testing::AssertionFailure() << name << ": " << differing << " pixels differ; first at " << first
+                                         << "\n  actual: " << actual_file.string()
+                                         << "\n  diff:   " << diff_file.string() << "\n  " << kRegenerate;
 }
 
 ::testing::AssertionResult matches_digests(const std::vector<std::string>& digests, const std::string& name) {
@@ -103,17 +101,20 @@ raster::Framebuffer diff_image(const raster::Framebuffer& expected, const raster
     std::vector<std::string> expected;
     for (std::string line; std::getline(in, line);) expected.push_back(line);
     if (expected.size() != digests.size()) {
-        return ::testing::AssertionFailure() << name << ": " << expected.size()
-                                             << " digests stored, " << digests.size() << " rendered";
+        return ::testing::AssertionFailure()
+               << name << ": " << expected.size() << " digests stored, " << digests.size() << " rendered";
     }
     long differing = 0;
     std::size_t first = 0;
     for (std::size_t i = digests.size(); i-- > 0;) {
-        if (digests[i] != expected[i]) { ++differing; first = i; }
+        if (digests[i] != expected[i]) {
+            ++differing;
+            first = i;
+        }
     }
     if (differing == 0) return ::testing::AssertionSuccess();
-    return ::testing::AssertionFailure() << name << ": " << differing << " frames differ, first is frame "
-                                         << first << "; " << kRegenerate;
+    return ::testing::AssertionFailure() << name << ": " << differing << " frames differ, first is frame " << first
+                                         << "; " << kRegenerate;
 }
 
 std::string digest_of(const raster::Framebuffer& image) {

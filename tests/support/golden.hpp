@@ -2,9 +2,9 @@
 
 #include <raster/image/framebuffer.hpp>
 
-#include <gtest/gtest.h>
 #include <string>
 #include <vector>
+#include <gtest/gtest.h>
 
 // Golden images in snapshots/, compared by decoded pixels. With RASTER_UPDATE_SNAPSHOTS=1 in
 // the environment the comparisons write the snapshots instead (`--target update-snapshots`).

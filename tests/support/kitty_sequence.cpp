@@ -26,7 +26,8 @@ std::vector<KittyChunk> kitty_chunks(std::string_view text, std::string_view fir
             const std::string_view pair = keys.substr(0, comma);
             const std::size_t equals = pair.find('=');
             EXPECT_NE(equals, std::string_view::npos) << pair;
-            if (equals != std::string_view::npos) chunk.keys[std::string(pair.substr(0, equals))] = std::string(pair.substr(equals + 1));
+            if (equals != std::string_view::npos)
+                chunk.keys[std::string(pair.substr(0, equals))] = std::string(pair.substr(equals + 1));
             keys = comma == std::string_view::npos ? std::string_view() : keys.substr(comma + 1);
         }
         if (semicolon != std::string_view::npos) chunk.payload = std::string(body.substr(semicolon + 1));
@@ -58,7 +59,8 @@ std::vector<std::uint8_t> from_base64(std::string_view text) {
         for (int k = 0; k < 4; ++k) {
             const int v = k >= 4 - pad ? 0 : value(text[i + static_cast<std::size_t>(k)]);
             if (v < 0) {
-                ADD_FAILURE() << "not base64: '" << text[i + static_cast<std::size_t>(k)] << "' at " << i + static_cast<std::size_t>(k);
+                ADD_FAILURE() << "not base64: '" << text[i + static_cast<std::size_t>(k)] << "' at "
+                              << i + static_cast<std::size_t>(k);
                 return bytes;
             }
             group = (group << 6) | static_cast<std::uint32_t>(v);

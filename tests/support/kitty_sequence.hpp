@@ -11,7 +11,7 @@ namespace test_support {
 
 struct KittyChunk {
     std::map<std::string, std::string> keys;  // "a" -> "T", "m" -> "1", ...
-    std::string payload;                       // base64, as sent
+    std::string payload;                      // base64, as sent
 };
 
 // The ESC _ G keys ; payload ESC \ sequences in `text` from the first whose keys start with

@@ -100,7 +100,8 @@ void write_png(const std::filesystem::path& path, const raster::Framebuffer& ima
         zlib.push_back(at + size >= raw.size() ? 1 : 0);
         put16(zlib, static_cast<std::uint32_t>(size));
         put16(zlib, static_cast<std::uint32_t>(~size & 0xFFFF));
-        zlib.insert(zlib.end(), raw.begin() + static_cast<std::ptrdiff_t>(at), raw.begin() + static_cast<std::ptrdiff_t>(at + size));
+        zlib.insert(zlib.end(), raw.begin() + static_cast<std::ptrdiff_t>(at),
+                    raw.begin() + static_cast<std::ptrdiff_t>(at + size));
         if (size == 0) break;
     }
     std::uint32_t a = 1, b = 0;
@@ -130,7 +131,8 @@ std::string textured_cube_obj(const std::string& mtllib, const std::string& mate
     obj += "v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\n"
            "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n";
     if (!material.empty()) obj += "usemtl " + material + "\n";
-    obj += "f 5/1 6/2 7/3 8/4\nf 2/1 1/2 4/3 3/4\nf 6/1 2/2 3/3 7/4\nf 1/1 5/2 8/3 4/4\nf 8/1 7/2 3/3 4/4\nf 1/1 2/2 6/3 5/4\n";
+    obj +=
+        "f 5/1 6/2 7/3 8/4\nf 2/1 1/2 4/3 3/4\nf 6/1 2/2 3/3 7/4\nf 1/1 5/2 8/3 4/4\nf 8/1 7/2 3/3 4/4\nf 1/1 2/2 6/3 5/4\n";
     return obj;
 }
 
@@ -151,8 +153,10 @@ std::string base64(const std::string& bytes) {
     std::string out;
     for (std::size_t i = 0; i < bytes.size(); i += 3) {
         std::uint32_t group = 0;
-        for (std::size_t k = 0; k < 3; ++k) group = group << 8 | (i + k < bytes.size() ? static_cast<std::uint8_t>(bytes[i + k]) : 0U);
-        for (std::size_t k = 0; k < 4; ++k) out += k <= (bytes.size() - i) ? kDigits[(group >> (18 - 6 * k)) & 63U] : '=';
+        for (std::size_t k = 0; k < 3; ++k)
+            group = group << 8 | (i + k < bytes.size() ? static_cast<std::uint8_t>(bytes[i + k]) : 0U);
+        for (std::size_t k = 0; k < 4; ++k)
+            out += k <= (bytes.size() - i) ? kDigits[(group >> (18 - 6 * k)) & 63U] : '=';
     }
     return out;
 }
@@ -163,14 +167,17 @@ void append_raw(std::string& bytes, Value value) {
 }
 
 // The tetrahedron's facets, counter-clockwise from outside, as STL and OBJ write them.
-const float kTetrahedron[4][3][3] = {
-    {{0, 0, 0}, {0, 1, 0}, {1, 0, 0}}, {{0, 0, 0}, {1, 0, 0}, {0, 0, 1}}, {{0, 0, 0}, {0, 0, 1}, {0, 1, 0}}, {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+const float kTetrahedron[4][3][3] = {{{0, 0, 0}, {0, 1, 0}, {1, 0, 0}},
+                                     {{0, 0, 0}, {1, 0, 0}, {0, 0, 1}},
+                                     {{0, 0, 0}, {0, 0, 1}, {0, 1, 0}},
+                                     {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
 
 }  // namespace
 
 std::string gltf_two_squares() {
     std::string buffer;
-    for (const float v : {-1.0F, -1.0F, 0.0F, 1.0F, -1.0F, 0.0F, 1.0F, 1.0F, 0.0F, -1.0F, 1.0F, 0.0F}) append_raw(buffer, v);
+    for (const float v : {-1.0F, -1.0F, 0.0F, 1.0F, -1.0F, 0.0F, 1.0F, 1.0F, 0.0F, -1.0F, 1.0F, 0.0F})
+        append_raw(buffer, v);
     for (const int i : {0, 1, 2, 0, 2, 3}) append_raw(buffer, static_cast<std::uint16_t>(i));
     return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
   "nodes": [{"children": [1, 2], "translation": [0, 0.5, 0]},
@@ -189,7 +196,9 @@ std::string stl_tetrahedron_ascii() {
     std::string stl = "solid tetrahedron\n";
     for (const auto& facet : kTetrahedron) {
         stl += "  facet normal 0 0 0\n    outer loop\n";
-        for (const auto& p : facet) stl += "      vertex " + std::to_string(p[0]) + " " + std::to_string(p[1]) + " " + std::to_string(p[2]) + "\n";
+        for (const auto& p : facet)
+            stl +=
+                "      vertex " + std::to_string(p[0]) + " " + std::to_string(p[1]) + " " + std::to_string(p[2]) + "\n";
         stl += "    endloop\n  endfacet\n";
     }
     return stl + "endsolid tetrahedron\n";

@@ -8,13 +8,12 @@ namespace {
 
 char symbol_for(raster::Rgb colour, const std::map<char, raster::Rgb>& legend) {
     if (colour == raster::Rgb{}) return '.';
-    const auto entry = std::find_if(legend.begin(), legend.end(),
-                                    [colour](const auto& item) { return item.second == colour; });
+    const auto entry =
+        std::find_if(legend.begin(), legend.end(), [colour](const auto& item) { return item.second == colour; });
     return entry == legend.end() ? '+' : entry->first;
 }
 
-std::vector<std::string> rows_of(const raster::Framebuffer& image,
-                                 const std::map<char, raster::Rgb>& legend) {
+std::vector<std::string> rows_of(const raster::Framebuffer& image, const std::map<char, raster::Rgb>& legend) {
     std::vector<std::string> rows;
     for (int y = 0; y < image.height(); ++y) {
         std::string row;
@@ -32,8 +31,7 @@ std::string to_ascii_art(const raster::Framebuffer& image, const std::map<char, 
     return art;
 }
 
-::testing::AssertionResult looks_like(const raster::Framebuffer& image,
-                                      const std::vector<std::string>& rows,
+::testing::AssertionResult looks_like(const raster::Framebuffer& image, const std::vector<std::string>& rows,
                                       const std::map<char, raster::Rgb>& legend) {
     const std::vector<std::string> actual = rows_of(image, legend);
     if (actual == rows) return ::testing::AssertionSuccess();
@@ -44,9 +42,9 @@ std::string to_ascii_art(const raster::Framebuffer& image, const std::map<char, 
     for (std::size_t y = 0; y < height; ++y) {
         const std::string expected_row = y < rows.size() ? rows[y] : "";
         const std::string actual_row = y < actual.size() ? actual[y] : "";
-        message << "  " << expected_row << std::string(actual_row.size() - std::min(actual_row.size(), expected_row.size()), ' ')
-                << " | " << actual_row << (expected_row == actual_row ? "" : "   <- row " + std::to_string(y))
-                << '\n';
+        message << "  " << expected_row
+                << std::string(actual_row.size() - std::min(actual_row.size(), expected_row.size()), ' ') << " | "
+                << actual_row << (expected_row == actual_row ? "" : "   <- row " + std::to_string(y)) << '\n';
     }
     return ::testing::AssertionFailure() << message.str();
 }

@@ -6,8 +6,8 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
-#include <sys/wait.h>
 #include <pty.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 namespace test_support {
@@ -43,8 +43,7 @@ std::vector<char*> argv_of(const std::string& program, const std::vector<std::st
 
 }  // namespace
 
-RunResult run(const std::string& program, const std::vector<std::string>& arguments,
-              const fs::path& directory) {
+RunResult run(const std::string& program, const std::vector<std::string>& arguments, const fs::path& directory) {
     const ScratchDir capture;
     const fs::path out = capture / "stdout";
     const fs::path err = capture / "stderr";
@@ -129,8 +128,6 @@ std::vector<std::uint8_t> read_bytes(const fs::path& path) {
     return {text.begin(), text.end()};
 }
 
-void write_text(const fs::path& path, const std::string& text) {
-    std::ofstream(path, std::ios::binary) << text;
-}
+void write_text(const fs::path& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
 
 }  // namespace test_support

@@ -23,7 +23,8 @@ std::vector<std::uint8_t> vp8l_chunk(int width, int height) {
 std::vector<std::uint8_t> vp8l_chunk(const raster::Framebuffer& image, const std::vector<std::uint8_t>& alpha) {
     const std::vector<std::uint8_t> still = raster::encode_webp_still(image, raster::Effort::fast, alpha);
     // A simple lossless file is RIFF, size, WEBP, then the one VP8L chunk.
-    if (still.size() < 20 || std::string(still.begin() + 12, still.begin() + 16) != "VP8L") throw std::logic_error("not a simple VP8L still");
+    if (still.size() < 20 || std::string(still.begin() + 12, still.begin() + 16) != "VP8L")
+        throw std::logic_error("not a simple VP8L still");
     return {still.begin() + 12, still.end()};
 }
 

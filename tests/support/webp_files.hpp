@@ -16,7 +16,7 @@ struct HandFrame {
     int width = 1;
     int height = 1;
     int duration_ms = 20;
-    std::uint8_t flags = 2;  // ANMF flags: 1 dispose to background, 2 do not blend
+    std::uint8_t flags = 2;             // ANMF flags: 1 dispose to background, 2 do not blend
     std::vector<std::uint8_t> picture;  // the frame's VP8L chunk, header included
 };
 

@@ -19,8 +19,7 @@ public:
     // Looks from `eye` at `target`, keeping `up` up (Gram-Schmidt). Throws std::invalid_argument
     // when a vector is not finite, the eye is on the target, or the view runs along `up`.
     [[nodiscard]] static OrthoCamera look_at(int width, int height, glm::vec3 eye,
-                                             glm::vec3 target = {0.0F, 0.0F, 0.0F},
-                                             glm::vec3 up = {0.0F, 1.0F, 0.0F});
+                                             glm::vec3 target = {0.0F, 0.0F, 0.0F}, glm::vec3 up = {0.0F, 1.0F, 0.0F});
 
     // View coordinates: x right, y up, z the distance in front of the eye along direction().
     [[nodiscard]] glm::dvec3 view_from_world(glm::vec3 world) const noexcept;

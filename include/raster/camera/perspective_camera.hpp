@@ -25,8 +25,8 @@ public:
 
     // Throws std::invalid_argument for sizes outside 1..kMaxSubpixelCoordinate, a lens out of
     // range, non-finite vectors, the eye on the target, or a view along `up`.
-    [[nodiscard]] static PerspectiveCamera look_at(int width, int height, glm::vec3 eye, glm::vec3 target,
-                                                   glm::vec3 up, Lens lens);
+    [[nodiscard]] static PerspectiveCamera look_at(int width, int height, glm::vec3 eye, glm::vec3 target, glm::vec3 up,
+                                                   Lens lens);
     // raster-engine's first-person form: yaw turns from +Z toward +X about +Y, pitch raises the
     // view toward +Y; both in radians, |pitch| < pi/2 (within about 1e-9 of it the view runs
     // along +Y and look_at refuses it).
@@ -39,7 +39,9 @@ public:
 
     [[nodiscard]] glm::dvec3 view_from_world(glm::vec3 world) const noexcept { return view_.view_from_world(world); }
     [[nodiscard]] glm::dvec4 clip_from_view(glm::dvec3 view) const noexcept;
-    [[nodiscard]] glm::dvec4 clip_from_world(glm::vec3 world) const noexcept { return clip_from_view(view_from_world(world)); }
+    [[nodiscard]] glm::dvec4 clip_from_world(glm::vec3 world) const noexcept {
+        return clip_from_view(view_from_world(world));
+    }
     // Continuous pixel coordinates of a clip-space point in front of the eye (w > 0).
     [[nodiscard]] glm::dvec2 screen_from_clip(glm::dvec4 clip) const noexcept;
 
@@ -63,8 +65,8 @@ private:
     int width_;
     int height_;
     Lens lens_;
-    double x_scale_;  // 1 / (aspect tan(fov/2))
-    double y_scale_;  // 1 / tan(fov/2)
+    double x_scale_;               // 1 / (aspect tan(fov/2))
+    double y_scale_;               // 1 / tan(fov/2)
     glm::dvec2 offset_{0.0, 0.0};  // the sample position, in pixels from the centre
 };
 
@@ -73,6 +75,7 @@ private:
 // keeps the orthographic framing, so a small field of view looks like the orthographic picture
 // and a wide one is seen from close by. Near and far are 1/100 of that distance and 100 beyond
 // it. Throws std::invalid_argument for a field of view out of range or an eye too far out to move.
-[[nodiscard]] PerspectiveCamera perspective_matching(const OrthoCamera& flat, int width, int height, double fov_degrees);
+[[nodiscard]] PerspectiveCamera perspective_matching(const OrthoCamera& flat, int width, int height,
+                                                     double fov_degrees);
 
 }  // namespace raster

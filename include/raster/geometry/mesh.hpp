@@ -4,8 +4,8 @@
 
 #include <array>
 #include <cmath>
-#include <limits>
 #include <cstdint>
+#include <limits>
 #include <vector>
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
@@ -55,8 +55,8 @@ struct Mesh {
 
 // A facet through corners a, b, c, turned if need be so that its normal points away from
 // `inside`; how shapes built around a centre get their winding right.
-[[nodiscard]] Facet facet_facing_away(const std::vector<glm::vec3>& positions, std::uint32_t a,
-                                      std::uint32_t b, std::uint32_t c, glm::vec3 inside);
+[[nodiscard]] Facet facet_facing_away(const std::vector<glm::vec3>& positions, std::uint32_t a, std::uint32_t b,
+                                      std::uint32_t c, glm::vec3 inside);
 
 // The mesh moved by `model`: positions as points, normals by the inverse transpose of the
 // linear part and renormalised, so non-uniform scale keeps them perpendicular to the surface.

@@ -16,10 +16,16 @@ struct LinearRgb {
     float g = 0.0F;
     float b = 0.0F;
 
-    friend constexpr LinearRgb operator+(LinearRgb x, LinearRgb y) noexcept { return {x.r + y.r, x.g + y.g, x.b + y.b}; }
-    friend constexpr LinearRgb operator-(LinearRgb x, LinearRgb y) noexcept { return {x.r - y.r, x.g - y.g, x.b - y.b}; }
+    friend constexpr LinearRgb operator+(LinearRgb x, LinearRgb y) noexcept {
+        return {x.r + y.r, x.g + y.g, x.b + y.b};
+    }
+    friend constexpr LinearRgb operator-(LinearRgb x, LinearRgb y) noexcept {
+        return {x.r - y.r, x.g - y.g, x.b - y.b};
+    }
     friend constexpr LinearRgb operator*(LinearRgb x, float k) noexcept { return {x.r * k, x.g * k, x.b * k}; }
-    friend constexpr LinearRgb operator*(LinearRgb x, LinearRgb y) noexcept { return {x.r * y.r, x.g * y.g, x.b * y.b}; }
+    friend constexpr LinearRgb operator*(LinearRgb x, LinearRgb y) noexcept {
+        return {x.r * y.r, x.g * y.g, x.b * y.b};
+    }
     friend constexpr bool operator==(LinearRgb, LinearRgb) = default;
 };
 

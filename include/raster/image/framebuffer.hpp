@@ -28,9 +28,7 @@ public:
 
     [[nodiscard]] int width() const noexcept { return width_; }
     [[nodiscard]] int height() const noexcept { return height_; }
-    [[nodiscard]] bool contains(int x, int y) const noexcept {
-        return x >= 0 && y >= 0 && x < width_ && y < height_;
-    }
+    [[nodiscard]] bool contains(int x, int y) const noexcept { return x >= 0 && y >= 0 && x < width_ && y < height_; }
 
     // Writes one pixel; a write outside the buffer is skipped, so primitives need no clipping.
     void set_pixel(int x, int y, Rgb colour) noexcept;

@@ -31,8 +31,12 @@ struct LaneRgb {
 };
 
 // Lane i of `lanes` set to one value.
-inline void put_lane(LaneVec3& lanes, std::size_t i, glm::vec3 v) noexcept { lanes.x[i] = v.x, lanes.y[i] = v.y, lanes.z[i] = v.z; }
-inline void put_lane(LaneRgb& lanes, std::size_t i, LinearRgb c) noexcept { lanes.r[i] = c.r, lanes.g[i] = c.g, lanes.b[i] = c.b; }
+inline void put_lane(LaneVec3& lanes, std::size_t i, glm::vec3 v) noexcept {
+    lanes.x[i] = v.x, lanes.y[i] = v.y, lanes.z[i] = v.z;
+}
+inline void put_lane(LaneRgb& lanes, std::size_t i, LinearRgb c) noexcept {
+    lanes.r[i] = c.r, lanes.g[i] = c.g, lanes.b[i] = c.b;
+}
 
 // srgb_from_linear of lane i for the first out.size() lanes.
 void srgb_from_linear(const LaneRgb& colours, std::span<Rgb> out) noexcept;

@@ -31,12 +31,12 @@ struct InputRecord {
 
 // What a reader accepts of one file.
 struct InputRules {
-    std::string role;             // "model", "texture", ...: for messages and InputRecord
-    std::uintmax_t max_bytes = 0; // larger files are refused before any byte is read
+    std::string role;              // "model", "texture", ...: for messages and InputRecord
+    std::uintmax_t max_bytes = 0;  // larger files are refused before any byte is read
     // Checks the first `signature_bytes` bytes (fewer if the file is shorter); nullptr takes any.
     bool (*signature)(std::span<const std::uint8_t> head) = nullptr;
     std::size_t signature_bytes = 0;
-    std::string expected;         // what the signature stands for: "a WebP file"
+    std::string expected;  // what the signature stands for: "a WebP file"
     // When not empty, an absolute, symlink-free directory outside which nothing is opened.
     std::filesystem::path confine;
 };
@@ -70,8 +70,8 @@ private:
 };
 
 // Calls `visit` with each line of the file from the start, without its end ("\n", "\r\n" or a
-// lone "\r", as tinyobjloader reads them), and its number from 1; a line longer than `max_line_bytes` throws "NAME:LINE: a line longer than ..." before
-// more of it is held.
+// lone "\r", as tinyobjloader reads them), and its number from 1; a line longer than `max_line_bytes` throws
+// "NAME:LINE: a line longer than ..." before more of it is held.
 void for_each_line(InputFile& file, const std::string& name, std::size_t max_line_bytes,
                    const std::function<void(std::string_view line, std::size_t number)>& visit);
 // The same for text already in memory.

@@ -1,8 +1,8 @@
 #pragma once
 
+#include <raster/geometry/mesh.hpp>
 #include <raster/io/input_file.hpp>
 #include <raster/shade/linear_lighting.hpp>
-#include <raster/geometry/mesh.hpp>
 #include <raster/shade/texture.hpp>
 
 #include <cstddef>

@@ -21,7 +21,8 @@ namespace raster {
 
 // The same from bytes in memory, `format` naming the kind ("gltf", "glb", "stl", "ply"); no other
 // file is opened and no map loaded. For tests and fuzzing.
-[[nodiscard]] Model parse_scene_file(std::span<const std::uint8_t> bytes, const std::string& format, const ObjOptions& options = {});
+[[nodiscard]] Model parse_scene_file(std::span<const std::uint8_t> bytes, const std::string& format,
+                                     const ObjOptions& options = {});
 
 // read_obj for .obj (any letter case), read_scene_file for .gltf, .glb, .stl and .ply; any other
 // ending is refused with the list of those it reads, and a file whose first bytes are another

@@ -26,7 +26,7 @@ void check_output_path(const std::filesystem::path& path, OutputPolicy policy = 
 // SIGHUP wait while the temporary file exists, on whichever thread they land (HeldSignals), so
 // an interrupt leaves the old file or the new and then ends the program as it would have.
 // The `inputs` are checked again just before the rename.
-void write_output_file(const std::filesystem::path& path, std::span<const std::uint8_t> bytes,
-                       OutputPolicy policy = {}, std::span<const InputRecord> inputs = {});
+void write_output_file(const std::filesystem::path& path, std::span<const std::uint8_t> bytes, OutputPolicy policy = {},
+                       std::span<const InputRecord> inputs = {});
 
 }  // namespace raster

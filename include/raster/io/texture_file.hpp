@@ -27,6 +27,7 @@ inline constexpr std::uintmax_t kMaxTextureFileBytes = std::uintmax_t{256} << 20
 // With `confine` set (by confinement_root), a file outside that directory is refused; the file
 // read is appended to `sources` when given.
 [[nodiscard]] Texture read_texture(const std::filesystem::path& path, std::size_t max_texels = kMaxTextureTexels,
-                                   const std::filesystem::path& confine = {}, std::vector<InputRecord>* sources = nullptr);
+                                   const std::filesystem::path& confine = {},
+                                   std::vector<InputRecord>* sources = nullptr);
 
 }  // namespace raster

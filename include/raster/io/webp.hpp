@@ -30,8 +30,7 @@ inline constexpr int kMaxFrameSpacingMs = (1 << 24) - 1;
 
 // The bytes of a lossless still .webp file; with `alpha` (one byte per pixel, 255 opaque) it
 // keeps transparency.
-[[nodiscard]] std::vector<std::uint8_t> encode_webp_still(const Framebuffer& image,
-                                                          Effort effort = Effort::balanced,
+[[nodiscard]] std::vector<std::uint8_t> encode_webp_still(const Framebuffer& image, Effort effort = Effort::balanced,
                                                           std::span<const std::uint8_t> alpha = {});
 // Encodes and writes a lossless still; returns the file's size in bytes.
 std::uintmax_t write_webp_still(const Framebuffer& image, const std::filesystem::path& path,
@@ -90,8 +89,8 @@ private:
 class AnimationWriter {
 public:
     // Checks the destination at once, so a bad path fails before any frame is rendered.
-    AnimationWriter(const std::filesystem::path& path, int width, int height,
-                    int frame_spacing_ms, AnimationSettings settings = {}, OutputPolicy policy = {});
+    AnimationWriter(const std::filesystem::path& path, int width, int height, int frame_spacing_ms,
+                    AnimationSettings settings = {}, OutputPolicy policy = {});
     AnimationWriter(const std::filesystem::path& path, int width, int height, int frame_spacing_ms, Effort effort,
                     OutputPolicy policy = {})
         : AnimationWriter(path, width, height, frame_spacing_ms, AnimationSettings{effort}, policy) {}
@@ -166,8 +165,7 @@ private:
 
 // Decodes frames one at a time (a WebpFrameReader); stops early when `visit` returns false.
 // Returns the canvas size and the file's frame count.
-WebpInfo for_each_webp_frame(const std::filesystem::path& path,
-                             const std::function<bool(const DecodedFrame&)>& visit,
+WebpInfo for_each_webp_frame(const std::filesystem::path& path, const std::function<bool(const DecodedFrame&)>& visit,
                              std::vector<InputRecord>* sources = nullptr);
 
 }  // namespace raster

@@ -1,8 +1,8 @@
 #pragma once
 
+#include <raster/camera/ortho_camera.hpp>
 #include <raster/geometry/cube.hpp>
 #include <raster/image/framebuffer.hpp>
-#include <raster/camera/ortho_camera.hpp>
 
 #include <array>
 #include <cstddef>
@@ -22,7 +22,7 @@ void draw_faces(Framebuffer& framebuffer, const OrthoCamera& camera, const Cube&
 enum class EdgeSelection { all, front_facing };
 
 // Draws the cube's edges as lines: all twelve, or only those of faces toward the camera.
-void draw_edges(Framebuffer& framebuffer, const OrthoCamera& camera, const Cube& cube,
-                EdgeSelection selection, Rgb colour);
+void draw_edges(Framebuffer& framebuffer, const OrthoCamera& camera, const Cube& cube, EdgeSelection selection,
+                Rgb colour);
 
 }  // namespace raster

@@ -1,9 +1,9 @@
 #pragma once
 
-#include <raster/rasterize/depth_buffer.hpp>
-#include <raster/image/framebuffer.hpp>
-#include <raster/geometry/mesh.hpp>
 #include <raster/camera/ortho_camera.hpp>
+#include <raster/geometry/mesh.hpp>
+#include <raster/image/framebuffer.hpp>
+#include <raster/rasterize/depth_buffer.hpp>
 #include <raster/rasterize/shader.hpp>
 
 #include <cstddef>

@@ -4,8 +4,8 @@
 #include <raster/image/subpixel.hpp>
 
 #include <cstdint>
-#include <type_traits>
 #include <span>
+#include <type_traits>
 #include <glm/vec2.hpp>
 
 namespace raster {
@@ -22,8 +22,8 @@ struct Span {
 class SpanVisitor {
 public:
     template <typename Callable>
-        requires(!std::is_same_v<std::remove_cvref_t<Callable>, SpanVisitor>)
-    SpanVisitor(Callable&& callable) noexcept  // NOLINT: implicit on purpose, like std::function
+    requires(!std::is_same_v<std::remove_cvref_t<Callable>, SpanVisitor>) SpanVisitor(Callable&& callable)
+    noexcept  // NOLINT: implicit on purpose, like std::function
         : object_(const_cast<void*>(static_cast<const void*>(&callable))),
           call_([](void* object, Span span) { (*static_cast<std::remove_reference_t<Callable>*>(object))(span); }) {}
     void operator()(Span span) const { call_(object_, span); }
@@ -54,7 +54,7 @@ struct PixelRect {
 std::int64_t rasterize_convex(std::span<const SubpixelPoint> corners, PixelRect clip, SpanVisitor visit);
 
 // Paints the covered pixels; the framebuffer's top-left pixel sits at `origin`.
-std::int64_t fill_convex(Framebuffer& framebuffer, std::span<const SubpixelPoint> corners,
-                         Rgb colour, glm::ivec2 origin = {0, 0});
+std::int64_t fill_convex(Framebuffer& framebuffer, std::span<const SubpixelPoint> corners, Rgb colour,
+                         glm::ivec2 origin = {0, 0});
 
 }  // namespace raster

@@ -24,30 +24,32 @@ struct Corner {
 // A value the rasterizer can interpolate: v0 + w1 (v1 - v0) + w2 (v2 - v0).
 template <typename Varying>
 concept Interpolable = std::copyable<Varying> && std::default_initializable<Varying> &&
-                       requires(const Varying& a, const Varying& b, float k) {
-                           { a + b } -> std::convertible_to<Varying>;
-                           { a - b } -> std::convertible_to<Varying>;
-                           { a * k } -> std::convertible_to<Varying>;
-                       };
+    requires(const Varying& a, const Varying& b, float k) {
+    { a + b } -> std::convertible_to<Varying>;
+    { a - b } -> std::convertible_to<Varying>;
+    { a* k } -> std::convertible_to<Varying>;
+};
 
 // kFacetNormal asks for the facet's normal (and its centroid as the position) at every corner
 // instead of the vertex attributes. pixel() takes the Varying alone, or also its change per
 // pixel step in x and y (texture filtering chooses its mip level from that).
 template <typename S>
-concept Shader = Interpolable<typename S::Varying> &&
-                 requires(const S& shader, const Corner& corner) {
-                     { S::kFacetNormal } -> std::convertible_to<bool>;
-                     { shader.vertex(corner) } -> std::convertible_to<typename S::Varying>;
-                 } &&
-                 (requires(const S& shader, const typename S::Varying& v) {
-                     { shader.pixel(v) } -> std::convertible_to<Rgb>;
-                 } || requires(const S& shader, const typename S::Varying& v) {
-                     { shader.pixel(v, v, v) } -> std::convertible_to<Rgb>;
-                 });
+concept Shader = Interpolable<typename S::Varying> && requires(const S& shader, const Corner& corner) {
+    { S::kFacetNormal } -> std::convertible_to<bool>;
+    { shader.vertex(corner) } -> std::convertible_to<typename S::Varying>;
+} &&(
+    requires(const S& shader, const typename S::Varying& v) {
+        { shader.pixel(v) } -> std::convertible_to<Rgb>;
+    } ||
+    requires(const S& shader, const typename S::Varying& v) {
+        { shader.pixel(v, v, v) } -> std::convertible_to<Rgb>;
+    });
 
 // A depth pass's shader: it carries nothing and colours nothing, so the rasterizer only tests
 // and writes depth for it (doc/conventions.md#depth).
 template <typename S>
-concept DepthOnly = requires { requires S::kDepthOnly; };
+concept DepthOnly = requires {
+    requires S::kDepthOnly;
+};
 
 }  // namespace raster

@@ -1,11 +1,11 @@
 #pragma once
 
+#include <raster/camera/ortho_camera.hpp>
+#include <raster/geometry/mesh.hpp>
+#include <raster/geometry/shapes.hpp>
+#include <raster/render/scene.hpp>
 #include <raster/shade/intensity_lighting.hpp>
 #include <raster/shade/linear_lighting.hpp>
-#include <raster/geometry/mesh.hpp>
-#include <raster/camera/ortho_camera.hpp>
-#include <raster/render/scene.hpp>
-#include <raster/geometry/shapes.hpp>
 
 #include <memory>
 #include <optional>
@@ -34,8 +34,8 @@ struct DetailChoice {
     ShapeKind shape;
     int level;
     ShadingMethod shading;
-    double silhouette_px;    // surface_deviation times the object's largest scale on screen
-    double shading_levels;   // the largest estimated colour error, 8-bit levels before rounding
+    double silhouette_px;   // surface_deviation times the object's largest scale on screen
+    double shading_levels;  // the largest estimated colour error, 8-bit levels before rounding
 };
 
 // The coarsest mesh whose outline meets the tolerance at this pose, then the first of flat,
@@ -51,8 +51,8 @@ struct DetailChoice {
 // One choice per object of a scene, made to hold over every sampled frame (the finest level and
 // dearest shading any of them needs), with the meshes built once.
 struct DetailPlan {
-    std::vector<std::optional<DetailChoice>> choices;         // nothing for objects without a shape
-    std::vector<std::shared_ptr<const Mesh>> meshes;          // the chosen mesh per object, or null
+    std::vector<std::optional<DetailChoice>> choices;  // nothing for objects without a shape
+    std::vector<std::shared_ptr<const Mesh>> meshes;   // the chosen mesh per object, or null
 };
 // Plans from sample frames of one clip (objects matched by index; all frames list the same ones).
 [[nodiscard]] DetailPlan plan_detail(std::span<const Scene> samples);
@@ -64,8 +64,10 @@ struct DetailPlan {
 // where the view line through that point first meets the true surface. Points within 1.5 px of
 // an outline, or whose line first meets another sheet of the surface, are left to the outline.
 [[nodiscard]] double shading_error_levels(ShapeKind shape, const Mesh& posed_mesh, const glm::mat4& model,
-                                          const OrthoCamera& camera, ShadingMethod method, const IntensityLighting& lighting);
+                                          const OrthoCamera& camera, ShadingMethod method,
+                                          const IntensityLighting& lighting);
 [[nodiscard]] double shading_error_levels(ShapeKind shape, const Mesh& posed_mesh, const glm::mat4& model,
-                                          const OrthoCamera& camera, ShadingMethod method, const LinearLighting& lighting);
+                                          const OrthoCamera& camera, ShadingMethod method,
+                                          const LinearLighting& lighting);
 
 }  // namespace raster

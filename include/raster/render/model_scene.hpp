@@ -1,8 +1,8 @@
 #pragma once
 
-#include <raster/rasterize/depth_buffer.hpp>
 #include <raster/image/framebuffer.hpp>
 #include <raster/io/model.hpp>
+#include <raster/rasterize/depth_buffer.hpp>
 #include <raster/render/scene.hpp>
 
 #include <memory>
@@ -22,10 +22,10 @@ struct ModelView {
     std::optional<glm::dvec3> eye;     // default: a three-quarter view from the front, right and above
     std::optional<glm::dvec3> target;  // default: the centre of the bounding box
     glm::dvec3 up{0.0, 1.0, 0.0};
-    double fov_degrees = 40.0;  // vertical; the sphere fills the narrower side of the view
-    bool orthographic = false;  // then the sphere fills the shorter side, whatever the field of view
-    std::optional<double> near;  // model units; default just short of the sphere
-    std::optional<double> far;   // default just beyond it
+    double fov_degrees = 40.0;        // vertical; the sphere fills the narrower side of the view
+    bool orthographic = false;        // then the sphere fills the shorter side, whatever the field of view
+    std::optional<double> near;       // model units; default just short of the sphere
+    std::optional<double> far;        // default just beyond it
     std::optional<glm::dvec3> light;  // toward the key light; default from over the viewer's left shoulder
     ShadingMethod shading = ShadingMethod::phong;
     Rgb background{48, 52, 60};
@@ -59,7 +59,7 @@ private:
     // The camera and lights, one of the two; objects are added per frame.
     std::optional<PerspectiveScene> perspective_;
     std::optional<Scene> orthographic_;
-    glm::dvec3 target_;     // in the unit sphere's coordinates
+    glm::dvec3 target_;  // in the unit sphere's coordinates
     glm::dvec3 up_;
 };
 

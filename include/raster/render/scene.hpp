@@ -1,18 +1,18 @@
 #pragma once
 
-#include <raster/rasterize/depth_buffer.hpp>
-#include <raster/image/framebuffer.hpp>
-#include <raster/shade/intensity_lighting.hpp>
-#include <raster/shade/linear_lighting.hpp>
-#include <raster/geometry/mesh.hpp>
 #include <raster/camera/ortho_camera.hpp>
 #include <raster/camera/perspective_camera.hpp>
+#include <raster/geometry/mesh.hpp>
 #include <raster/geometry/shapes.hpp>
+#include <raster/image/framebuffer.hpp>
+#include <raster/rasterize/depth_buffer.hpp>
+#include <raster/shade/intensity_lighting.hpp>
+#include <raster/shade/linear_lighting.hpp>
 #include <raster/shade/texture.hpp>
 
+#include <cstdint>
 #include <memory>
 #include <optional>
-#include <cstdint>
 #include <span>
 #include <variant>
 #include <vector>
@@ -91,7 +91,7 @@ inline constexpr int kMaxThreads = 256;
 namespace detail {
 class WorkerTeam;
 class SampleBuffer;
-}
+}  // namespace detail
 
 // Clears to the background and draws every object; `depth` is prepared and used only when the
 // scene needs it, so a lone convex mesh never touches it. Returns the facets drawn (in the last
@@ -100,7 +100,8 @@ std::size_t render(Framebuffer& framebuffer, const Scene& scene, DepthBuffer& de
 // The same in perspective: triangles are clipped to the near and far planes (and a guard band),
 // attributes interpolated through 1/w, and the viewer's direction taken at each point
 // (doc/conventions.md#perspective). The camera must have the framebuffer's size.
-std::size_t render(Framebuffer& framebuffer, const PerspectiveScene& scene, DepthBuffer& depth, RenderOptions options = {});
+std::size_t render(Framebuffer& framebuffer, const PerspectiveScene& scene, DepthBuffer& depth,
+                   RenderOptions options = {});
 
 // What a run of frames keeps from one to the next: its threads, started once rather than for
 // every frame, and its depth buffer. Draws exactly what render() draws; one frame at a time.

@@ -29,8 +29,7 @@ void render_white_pixel(Framebuffer& framebuffer);
 void render_spokes(Framebuffer& framebuffer);
 // The cube at `pose` on black: palette faces when filled, the 0.0.8 light when lit, otherwise
 // lines in `line_colour`.
-void render_cube(Framebuffer& framebuffer, const glm::mat4& pose, CubeStyle style,
-                 Rgb line_colour);
+void render_cube(Framebuffer& framebuffer, const glm::mat4& pose, CubeStyle style, Rgb line_colour);
 // 0.0.3 / 0.0.5 / 0.0.6: the still pose, white lines for the wireframe styles.
 void render_still_cube(Framebuffer& framebuffer, CubeStyle style);
 // 0.0.7: the unit cube at the identity pose: only the blue near face shows.

@@ -42,8 +42,8 @@ private:
     [[nodiscard]] PerspectiveScene flythrough(int width, int height, double along) const;
 
     const SeedSceneInfo* info_;
-    std::vector<SceneObject> fixed_;  // what does not move
-    SceneObject moving_;              // the model that turns, or the boat
+    std::vector<SceneObject> fixed_;              // what does not move
+    SceneObject moving_;                          // the model that turns, or the boat
     std::shared_ptr<const IslandWorld> islands_;  // the whole world, for "islands"
 };
 

@@ -31,7 +31,9 @@ struct IntensityMaterial {
     std::optional<float> shininess;
 
     // Lambert plus ambient, the diffuse share being what the ambient leaves.
-    [[nodiscard]] static IntensityMaterial matte(Rgb base, float ambient) { return {base, ambient, 1.0F - ambient, {}}; }
+    [[nodiscard]] static IntensityMaterial matte(Rgb base, float ambient) {
+        return {base, ambient, 1.0F - ambient, {}};
+    }
     // Blinn-Phong on top.
     [[nodiscard]] static IntensityMaterial shiny(Rgb base, float ambient, float shininess) {
         return {base, ambient, 1.0F - ambient, shininess};

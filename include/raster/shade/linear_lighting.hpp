@@ -1,10 +1,10 @@
 #pragma once
 
+#include <raster/geometry/mesh.hpp>
 #include <raster/image/colour.hpp>
 #include <raster/image/framebuffer.hpp>
 #include <raster/image/lanes.hpp>
 #include <raster/shade/intensity_lighting.hpp>
-#include <raster/geometry/mesh.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -42,7 +42,8 @@ struct LinearMaterial {
     std::optional<float> shininess;
 
     // The colours given as sRGB bytes (#RRGGBB), decoded to linear light.
-    [[nodiscard]] static LinearMaterial from_srgb(Rgb emissive, Rgb diffuse, Rgb specular, std::optional<float> shininess);
+    [[nodiscard]] static LinearMaterial from_srgb(Rgb emissive, Rgb diffuse, Rgb specular,
+                                                  std::optional<float> shininess);
 };
 
 // raster-engine's Doom-like darkening: light received falls off linearly with view depth, from
@@ -106,7 +107,8 @@ public:
     }
     // srgb_from_linear(shade(position, unit_or_zero(normal), diffuse colour)) at out.size() <=
     // kLanes points at once: the same operations in SIMD lanes, so each lane equals it bit for bit.
-    void shade_lanes(const LaneVec3& positions, const LaneVec3& normals, const LaneRgb& diffuse_colours, std::span<Rgb> out) const noexcept;
+    void shade_lanes(const LaneVec3& positions, const LaneVec3& normals, const LaneRgb& diffuse_colours,
+                     std::span<Rgb> out) const noexcept;
 
     // The light a surface point receives, before the material's colours: how much diffuse and
     // how much specular light. Zero for a zero normal.

@@ -1,11 +1,11 @@
 #pragma once
 
+#include <raster/geometry/mesh.hpp>
 #include <raster/image/colour.hpp>
 #include <raster/image/lanes.hpp>
+#include <raster/rasterize/shader.hpp>
 #include <raster/shade/intensity_lighting.hpp>
 #include <raster/shade/linear_lighting.hpp>
-#include <raster/geometry/mesh.hpp>
-#include <raster/rasterize/shader.hpp>
 
 #include <span>
 #include <glm/geometric.hpp>
@@ -23,7 +23,9 @@ struct IntensityShader {
     const IntensityLighting* lighting;
 
     [[nodiscard]] Varying vertex(const Corner& corner) const noexcept { return lighting->intensity(corner.normal); }
-    [[nodiscard]] Rgb pixel(Varying intensity) const noexcept { return scaled_colour(lighting->material.base, intensity); }
+    [[nodiscard]] Rgb pixel(Varying intensity) const noexcept {
+        return scaled_colour(lighting->material.base, intensity);
+    }
     // pixel() at up to kLanes intensities at once, in SIMD lanes.
     void pixels(std::span<const Varying> intensities, std::span<Rgb> out) const noexcept {
         LaneFloats lanes{};
@@ -65,7 +67,9 @@ struct LinearColourShader {
     static constexpr bool kFacetNormal = FacetNormal;
     const LinearLighting* lighting;
 
-    [[nodiscard]] Varying vertex(const Corner& corner) const noexcept { return lighting->shade(corner.position, corner.normal); }
+    [[nodiscard]] Varying vertex(const Corner& corner) const noexcept {
+        return lighting->shade(corner.position, corner.normal);
+    }
     [[nodiscard]] Rgb pixel(const Varying& colour) const noexcept { return srgb_from_linear(colour); }
     // pixel() at up to kLanes colours at once.
     void pixels(std::span<const Varying> colours, std::span<Rgb> out) const noexcept {

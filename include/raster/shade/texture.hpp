@@ -1,8 +1,8 @@
 #pragma once
 
 #include <raster/image/colour.hpp>
-#include <raster/image/lanes.hpp>
 #include <raster/image/framebuffer.hpp>
+#include <raster/image/lanes.hpp>
 
 #include <array>
 #include <cstddef>
@@ -67,8 +67,8 @@ private:
     [[nodiscard]] LinearRgb nearest(const Framebuffer& level, glm::vec2 uv, TextureWrap wrap) const noexcept;
     [[nodiscard]] LinearRgb bilinear(const Framebuffer& level, glm::vec2 uv, TextureWrap wrap) const noexcept;
     // bilinear() in lanes, lane i reading level(levels[i]).
-    void bilinear_lanes(const std::array<std::size_t, kLanes>& levels, const LaneFloats& u, const LaneFloats& v, TextureWrap wrap,
-                        LaneRgb& out, int count) const noexcept;
+    void bilinear_lanes(const std::array<std::size_t, kLanes>& levels, const LaneFloats& u, const LaneFloats& v,
+                        TextureWrap wrap, LaneRgb& out, int count) const noexcept;
 
     std::vector<Framebuffer> levels_;
     std::array<float, 256> linear_from_byte_{};

@@ -59,11 +59,13 @@ struct DiffuseSource {
 
 // The texture coordinates of up to kLanes Varyings and their changes per pixel, side by side.
 template <typename Varying>
-[[nodiscard]] LaneUvs lane_uvs(std::span<const Varying> v, std::span<const Varying> per_x, std::span<const Varying> per_y) noexcept {
+[[nodiscard]] LaneUvs lane_uvs(std::span<const Varying> v, std::span<const Varying> per_x,
+                               std::span<const Varying> per_y) noexcept {
     LaneUvs uvs;
     for (std::size_t i = 0; i < v.size(); ++i) {
         uvs.u[i] = v[i].uv.x, uvs.v[i] = v[i].uv.y;
-        uvs.u_per_x[i] = per_x[i].uv.x, uvs.v_per_x[i] = per_x[i].uv.y, uvs.u_per_y[i] = per_y[i].uv.x, uvs.v_per_y[i] = per_y[i].uv.y;
+        uvs.u_per_x[i] = per_x[i].uv.x, uvs.v_per_x[i] = per_x[i].uv.y, uvs.u_per_y[i] = per_y[i].uv.x,
+        uvs.v_per_y[i] = per_y[i].uv.y;
     }
     return uvs;
 }
@@ -81,15 +83,19 @@ struct BasicUnlitShader {
     static constexpr bool kFacetNormal = false;
     DiffuseSource diffuse;
 
-    [[nodiscard]] Varying vertex(const Corner& corner) const noexcept { return {corner.uv, Tint<Tinted>(corner.colour)}; }
+    [[nodiscard]] Varying vertex(const Corner& corner) const noexcept {
+        return {corner.uv, Tint<Tinted>(corner.colour)};
+    }
     [[nodiscard]] Rgb pixel(const Varying& v, const Varying& per_x, const Varying& per_y) const noexcept {
         return srgb_from_linear(v.tint.tinted(diffuse.at(v.uv, {per_x.uv, per_y.uv})));
     }
     // pixel() at up to kLanes points at once, the texture read in lanes.
-    void pixels(std::span<const Varying> v, std::span<const Varying> per_x, std::span<const Varying> per_y, std::span<Rgb> out) const noexcept {
+    void pixels(std::span<const Varying> v, std::span<const Varying> per_x, std::span<const Varying> per_y,
+                std::span<Rgb> out) const noexcept {
         LaneRgb albedo;
         diffuse.at_lanes(lane_uvs(v, per_x, per_y), albedo, static_cast<int>(v.size()));
-        for (std::size_t i = 0; i < v.size(); ++i) out[i] = srgb_from_linear(v[i].tint.tinted({albedo.r[i], albedo.g[i], albedo.b[i]}));
+        for (std::size_t i = 0; i < v.size(); ++i)
+            out[i] = srgb_from_linear(v[i].tint.tinted({albedo.r[i], albedo.g[i], albedo.b[i]}));
     }
 };
 using UnlitShader = BasicUnlitShader<false>;
@@ -127,7 +133,8 @@ struct TexturedLightShader {
         return srgb_from_linear(lighting->material().emissive + albedo * v.diffuse + v.specular);
     }
     // pixel() at up to kLanes points at once, the texture read in lanes.
-    void pixels(std::span<const Varying> v, std::span<const Varying> per_x, std::span<const Varying> per_y, std::span<Rgb> out) const noexcept {
+    void pixels(std::span<const Varying> v, std::span<const Varying> per_x, std::span<const Varying> per_y,
+                std::span<Rgb> out) const noexcept {
         LaneRgb read;
         diffuse.at_lanes(lane_uvs(v, per_x, per_y), read, static_cast<int>(v.size()));
         for (std::size_t i = 0; i < v.size(); ++i) {
@@ -169,13 +176,16 @@ struct BasicTexturedPhongShader {
         return srgb_from_linear(lighting->shade(v.position, unit_or_zero(v.normal), albedo));
     }
     // pixel() at up to kLanes points at once, in SIMD lanes.
-    void pixels(std::span<const Varying> v, std::span<const Varying> per_x, std::span<const Varying> per_y, std::span<Rgb> out) const noexcept {
+    void pixels(std::span<const Varying> v, std::span<const Varying> per_x, std::span<const Varying> per_y,
+                std::span<Rgb> out) const noexcept {
         LaneVec3 positions, normals;
-        for (std::size_t i = 0; i < v.size(); ++i) put_lane(positions, i, v[i].position), put_lane(normals, i, v[i].normal);
+        for (std::size_t i = 0; i < v.size(); ++i)
+            put_lane(positions, i, v[i].position), put_lane(normals, i, v[i].normal);
         LaneRgb albedo;
         diffuse.at_lanes(lane_uvs(v, per_x, per_y), albedo, static_cast<int>(v.size()));
         if constexpr (Tinted) {
-            for (std::size_t i = 0; i < v.size(); ++i) put_lane(albedo, i, v[i].tint.tinted({albedo.r[i], albedo.g[i], albedo.b[i]}));
+            for (std::size_t i = 0; i < v.size(); ++i)
+                put_lane(albedo, i, v[i].tint.tinted({albedo.r[i], albedo.g[i], albedo.b[i]}));
         }
         lighting->shade_lanes(positions, normals, albedo, out.first(v.size()));
     }

@@ -12,25 +12,30 @@
 
 namespace raster::detail {
 
-std::string structure_problem(std::span<const std::uint8_t> bytes, const std::string& extension, const std::filesystem::path& directory,
-                              const ObjOptions& options) {
+std::string structure_problem(std::span<const std::uint8_t> bytes, const std::string& extension,
+                              const std::filesystem::path& directory, const ObjOptions& options) {
     if (extension == ".ply") {
         if (std::string problem = ply_header_problem(bytes); !problem.empty()) return problem;
         return ply_counts_problem(bytes);
     }
     if (extension != ".gltf" && extension != ".glb") return "";
-    return gltf_structure_problem(bytes, extension == ".glb", [&](std::string_view uri) -> std::optional<std::uint64_t> {
-        try {
-            std::error_code error;
-            const std::filesystem::path file = resolve_named_path(directory, std::string(uri), options.confine);
-            // Outside the confinement a size would tell an uploader something: its reader refuses it instead.
-            if (!options.confine.empty() && std::filesystem::weakly_canonical(file, error).lexically_relative(options.confine).string().starts_with("..")) return std::nullopt;
-            const std::uintmax_t size = std::filesystem::file_size(file, error);
-            return error ? std::nullopt : std::optional<std::uint64_t>(size);
-        } catch (const std::runtime_error&) {
-            return std::nullopt;
-        }
-    });
+    return gltf_structure_problem(
+        bytes, extension == ".glb", [&](std::string_view uri) -> std::optional<std::uint64_t> {
+            try {
+                std::error_code error;
+                const std::filesystem::path file = resolve_named_path(directory, std::string(uri), options.confine);
+                // Outside the confinement a size would tell an uploader something: its reader refuses it instead.
+                if (!options.confine.empty() && std::filesystem::weakly_canonical(file, error)
+                                                    .lexically_relative(options.confine)
+                                                    .string()
+                                                    .starts_with(".."))
+                    return std::nullopt;
+                const std::uintmax_t size = std::filesystem::file_size(file, error);
+                return error ? std::nullopt : std::optional<std::uint64_t>(size);
+            } catch (const std::runtime_error&) {
+                return std::nullopt;
+            }
+        });
 }
 
 // A stream over bytes in memory that leaves `open` when deleted, whoever deletes it.
@@ -46,7 +51,8 @@ private:
     std::unordered_set<TrackedStream*>& open_;
 };
 
-BoundedFiles::BoundedFiles(const ObjOptions& options, std::vector<InputRecord>& sources, std::filesystem::path model, std::string extension)
+BoundedFiles::BoundedFiles(const ObjOptions& options, std::vector<InputRecord>& sources, std::filesystem::path model,
+                           std::string extension)
     : options_(options), sources_(sources), model_(std::move(model)), extension_(std::move(extension)) {
     has_model_ = !model_.empty() && identity_of(model_, model_identity_);
 }
@@ -78,7 +84,8 @@ Assimp::IOStream* BoundedFiles::Open(const char* file, const char* mode) {
         }
         auto bytes = std::make_unique<std::vector<std::uint8_t>>(read_input_file(file, rules));
         if (is_model) {
-            if (std::string problem = structure_problem(*bytes, extension_, model_.parent_path(), options_); !problem.empty()) {
+            if (std::string problem = structure_problem(*bytes, extension_, model_.parent_path(), options_);
+                !problem.empty()) {
                 throw std::runtime_error(problem);
             }
         }

@@ -21,7 +21,8 @@ class TrackedStream;
 class BoundedFiles final : public Assimp::IOSystem {
 public:
     // `model`: the file whose structure is checked whenever it is opened; `extension` its format.
-    BoundedFiles(const ObjOptions& options, std::vector<InputRecord>& sources, std::filesystem::path model = {}, std::string extension = {});
+    BoundedFiles(const ObjOptions& options, std::vector<InputRecord>& sources, std::filesystem::path model = {},
+                 std::string extension = {});
     ~BoundedFiles() override;
     BoundedFiles(const BoundedFiles&) = delete;
     BoundedFiles& operator=(const BoundedFiles&) = delete;

@@ -28,15 +28,19 @@ using detail::BoundedFiles;
 // Leaves `importer` only the reader of one format: when it declines a file, assimp would
 // otherwise offer it to every reader it has (3DS, FBX, Collada, ...). Returns those taken out,
 // which the caller now owns.
-std::vector<std::unique_ptr<Assimp::BaseImporter>> keep_only_reader(Assimp::Importer& importer, const std::string& extension) {
+std::vector<std::unique_ptr<Assimp::BaseImporter>> keep_only_reader(Assimp::Importer& importer,
+                                                                    const std::string& extension) {
     const std::string wanted = extension == ".glb" ? "glb" : extension.substr(1);
     std::vector<Assimp::BaseImporter*> others;
     for (std::size_t i = 0; i < importer.GetImporterCount(); ++i) {
         const aiImporterDesc* about = importer.GetImporterInfo(i);
         const std::string name = about != nullptr && about->mName != nullptr ? about->mName : "";
-        const std::string endings = about != nullptr && about->mFileExtensions != nullptr ? " " + std::string(about->mFileExtensions) + " " : "";
+        const std::string endings = about != nullptr && about->mFileExtensions != nullptr
+                                        ? " " + std::string(about->mFileExtensions) + " "
+                                        : "";
         const bool gltf2 = name.find("glTF2") != std::string::npos;
-        const bool keep = endings.find(" " + wanted + " ") != std::string::npos && (wanted.starts_with("gl") ? gltf2 : true);
+        const bool keep =
+            endings.find(" " + wanted + " ") != std::string::npos && (wanted.starts_with("gl") ? gltf2 : true);
         if (!keep) others.push_back(importer.GetImporter(i));
     }
     std::vector<std::unique_ptr<Assimp::BaseImporter>> removed;
@@ -56,7 +60,8 @@ Model read_scene_file(const std::filesystem::path& path, const ObjOptions& optio
     const std::string name = printable(path.string());
     Model model;
     std::string extension = path.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     std::vector<std::unique_ptr<Assimp::BaseImporter>> removed;  // outlives the importer that gave them up
     Assimp::Importer importer;
     removed = keep_only_reader(importer, extension);
@@ -71,7 +76,8 @@ Model read_scene_file(const std::filesystem::path& path, const ObjOptions& optio
     const aiScene* scene = importer.ReadFile(path.string(), aiProcess_ValidateDataStructure);
     if (!readable(scene)) {
         const std::string& why = files->first_failure();
-        if (why.starts_with("'" + name + "' ")) throw std::runtime_error(name + ": " + files->first_reason());  // the model itself
+        if (why.starts_with("'" + name + "' "))
+            throw std::runtime_error(name + ": " + files->first_reason());  // the model itself
         throw std::runtime_error(name + ": " + (why.empty() ? kUnreadable : why));
     }
     detail::model_from_scene(*scene, path, name, detail::colour_space_of(extension), options, model);
@@ -88,8 +94,10 @@ Model parse_scene_file(std::span<const std::uint8_t> bytes, const std::string& f
     Assimp::Importer importer;
     removed = keep_only_reader(importer, "." + format);
     importer.SetIOHandler(new BoundedFiles(no_files, model.sources));
-    if (std::string problem = detail::structure_problem(bytes, "." + format, "", no_files); !problem.empty()) throw std::runtime_error(name + ": " + problem);
-    const aiScene* scene = importer.ReadFileFromMemory(bytes.data(), bytes.size(), aiProcess_ValidateDataStructure, format.c_str());
+    if (std::string problem = detail::structure_problem(bytes, "." + format, "", no_files); !problem.empty())
+        throw std::runtime_error(name + ": " + problem);
+    const aiScene* scene =
+        importer.ReadFileFromMemory(bytes.data(), bytes.size(), aiProcess_ValidateDataStructure, format.c_str());
     if (!readable(scene)) throw std::runtime_error(name + ": " + kUnreadable);
     detail::model_from_scene(*scene, "", name, detail::colour_space_of(format), no_files, model);
     return model;

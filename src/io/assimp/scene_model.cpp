@@ -1,9 +1,9 @@
 #include "io/assimp/scene_model.hpp"
 
+#include "geometry/polygon_triangles.hpp"
+#include "io/gltf_structure.hpp"
 #include "io/model_builder.hpp"
 #include "io/named_path.hpp"
-#include "io/gltf_structure.hpp"
-#include "geometry/polygon_triangles.hpp"
 
 #include <raster/image/colour.hpp>
 #include <raster/io/input_file.hpp>
@@ -30,7 +30,8 @@ namespace {
 
 glm::dmat4 matrix_of(const aiMatrix4x4& m) {
     // assimp's matrices are row-major with translation in the last column; GLM's are column-major.
-    return glm::transpose(glm::dmat4(m.a1, m.a2, m.a3, m.a4, m.b1, m.b2, m.b3, m.b4, m.c1, m.c2, m.c3, m.c4, m.d1, m.d2, m.d3, m.d4));
+    return glm::transpose(
+        glm::dmat4(m.a1, m.a2, m.a3, m.a4, m.b1, m.b2, m.b3, m.b4, m.c1, m.c2, m.c3, m.c4, m.d1, m.d2, m.d3, m.d4));
 }
 
 bool finite(const aiVector3D& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
@@ -47,7 +48,8 @@ LinearMaterial material_from(const aiMaterial& m) {
     const auto usable = [](float v, float fallback) { return std::isfinite(v) ? std::clamp(v, 0.0F, 1.0F) : fallback; };
     metallic = usable(metallic, 0.0F);
     roughness = usable(roughness, 1.0F);
-    const LinearRgb colour{std::max(0.0F, usable(base.r, 0.8F)), std::max(0.0F, usable(base.g, 0.8F)), std::max(0.0F, usable(base.b, 0.8F))};
+    const LinearRgb colour{std::max(0.0F, usable(base.r, 0.8F)), std::max(0.0F, usable(base.g, 0.8F)),
+                           std::max(0.0F, usable(base.b, 0.8F))};
     LinearMaterial material{LinearRgb{}, colour * (1.0F - metallic), LinearRgb{}, std::nullopt};
     const float alpha = roughness * roughness;
     if (pbr && alpha < 0.95F) {
@@ -66,8 +68,10 @@ float linear_channel(float written, ColourSpace space) {
 
 class SceneReader {
 public:
-    SceneReader(const aiScene& scene, const std::filesystem::path& path, ColourSpace colours, const ObjOptions& options, Model& model)
-        : scene_(scene), path_(path), name_(printable(path.string())), colours_(colours), options_(options), model_(model) {}
+    SceneReader(const aiScene& scene, const std::filesystem::path& path, ColourSpace colours, const ObjOptions& options,
+                Model& model)
+        : scene_(scene), path_(path), name_(printable(path.string())), colours_(colours), options_(options),
+          model_(model) {}
 
     PolygonSoup soup() {
         if (scene_.mRootNode == nullptr) throw std::runtime_error("it holds no scene");
@@ -87,11 +91,14 @@ public:
 
 private:
     void visit(const aiNode& node, const glm::dmat4& parent, int depth) {
-        if (depth > kMaxGltfNodeDepth) throw std::runtime_error("its nodes nest more than " + std::to_string(kMaxGltfNodeDepth) + " deep (or loop)");
+        if (depth > kMaxGltfNodeDepth)
+            throw std::runtime_error("its nodes nest more than " + std::to_string(kMaxGltfNodeDepth) +
+                                     " deep (or loop)");
         if (!on_path_.insert(&node).second) throw std::runtime_error("its node hierarchy loops");
         const glm::dmat4 world = parent * matrix_of(node.mTransformation);
         for (unsigned i = 0; i < node.mNumMeshes; ++i) {
-            if (node.mMeshes[i] >= scene_.mNumMeshes) throw std::runtime_error("a node names mesh " + std::to_string(node.mMeshes[i]) + ", which it lacks");
+            if (node.mMeshes[i] >= scene_.mNumMeshes)
+                throw std::runtime_error("a node names mesh " + std::to_string(node.mMeshes[i]) + ", which it lacks");
             add_mesh(*scene_.mMeshes[node.mMeshes[i]], world);
         }
         for (unsigned i = 0; i < node.mNumChildren; ++i) {
@@ -113,7 +120,9 @@ private:
         const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(glm::dmat3(world)));
         for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
             const aiVector3D& p = mesh.mVertices[v];
-            if (!finite(p)) throw std::runtime_error("mesh '" + printable(mesh.mName.C_Str(), 80) + "' has a vertex that is not a finite point");
+            if (!finite(p))
+                throw std::runtime_error("mesh '" + printable(mesh.mName.C_Str(), 80) +
+                                         "' has a vertex that is not a finite point");
             const glm::dvec3 placed = glm::dvec3(world * glm::dvec4(p.x, p.y, p.z, 1.0));
             soup_.positions.emplace_back(placed.x, placed.y, -placed.z);
             if (mesh.mNormals != nullptr) {
@@ -127,7 +136,8 @@ private:
             }
             if (has_colours) {  // alpha is not drawn: surfaces are opaque
                 const aiColor4D& c = mesh.mColors[0][v];
-                soup_.colours.push_back({linear_channel(c.r, colours_), linear_channel(c.g, colours_), linear_channel(c.b, colours_)});
+                soup_.colours.push_back(
+                    {linear_channel(c.r, colours_), linear_channel(c.g, colours_), linear_channel(c.b, colours_)});
             }
         }
         std::vector<glm::dvec3> outline;
@@ -135,20 +145,24 @@ private:
         for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
             const aiFace& face = mesh.mFaces[f];
             if (face.mNumIndices < 3) continue;  // points and lines draw nothing
-            if (face.mNumIndices > kMaxFaceCorners) throw std::runtime_error("a face of more than " + std::to_string(kMaxFaceCorners) + " corners");
+            if (face.mNumIndices > kMaxFaceCorners)
+                throw std::runtime_error("a face of more than " + std::to_string(kMaxFaceCorners) + " corners");
             outline.clear();
             corners.clear();
             for (unsigned k = 0; k < face.mNumIndices; ++k) {
                 const unsigned index = face.mIndices[k];
                 if (index >= mesh.mNumVertices) {
-                    throw std::runtime_error("a face names vertex " + std::to_string(index) + " of a mesh of " + std::to_string(mesh.mNumVertices));
+                    throw std::runtime_error("a face names vertex " + std::to_string(index) + " of a mesh of " +
+                                             std::to_string(mesh.mNumVertices));
                 }
                 const std::int64_t at = first + index;
-                corners.push_back({at, has_normals ? at : kNoIndex, has_uvs ? at : kNoIndex, has_colours ? at : kNoIndex});
+                corners.push_back(
+                    {at, has_normals ? at : kNoIndex, has_uvs ? at : kNoIndex, has_colours ? at : kNoIndex});
                 outline.emplace_back(soup_.positions[static_cast<std::size_t>(at)]);
             }
             for (const auto& [a, b, c] : triangles_of_polygon(outline)) {
-                soup_.triangles.push_back({{corners[a], corners[c], corners[b]}, static_cast<int>(mesh.mMaterialIndex)});
+                soup_.triangles.push_back(
+                    {{corners[a], corners[c], corners[b]}, static_cast<int>(mesh.mMaterialIndex)});
             }
         }
         if (!soup_.normals.empty()) soup_.normals.resize(soup_.positions.size(), glm::vec3(0.0F));
@@ -158,7 +172,8 @@ private:
 
     std::shared_ptr<const Texture> map_of(const aiMaterial& m) {
         aiString written;
-        if (m.GetTexture(aiTextureType_BASE_COLOR, 0, &written) != AI_SUCCESS && m.GetTexture(aiTextureType_DIFFUSE, 0, &written) != AI_SUCCESS) {
+        if (m.GetTexture(aiTextureType_BASE_COLOR, 0, &written) != AI_SUCCESS &&
+            m.GetTexture(aiTextureType_DIFFUSE, 0, &written) != AI_SUCCESS) {
             return nullptr;
         }
         const std::string text = written.C_Str();
@@ -167,16 +182,21 @@ private:
         std::shared_ptr<const Texture> texture;
         try {
             if (const aiTexture* embedded = scene_.GetEmbeddedTexture(written.C_Str())) {
-                if (embedded->mHeight != 0) throw std::runtime_error("an embedded image of raw texels, which raster does not read");
+                if (embedded->mHeight != 0)
+                    throw std::runtime_error("an embedded image of raw texels, which raster does not read");
                 const auto* bytes = reinterpret_cast<const std::uint8_t*>(embedded->pcData);
-                texture = std::make_shared<const Texture>(decode_texture({bytes, embedded->mWidth}, options_.max_texels));
+                texture =
+                    std::make_shared<const Texture>(decode_texture({bytes, embedded->mWidth}, options_.max_texels));
             } else {
                 const std::filesystem::path file = resolve_named_path(path_.parent_path(), text, options_.confine);
-                if (FileIdentity identity; identity_of(file, identity)) model_.sources.push_back({file, identity, "texture"});
-                texture = std::make_shared<const Texture>(read_texture(file, options_.max_texels, options_.confine, &model_.sources));
+                if (FileIdentity identity; identity_of(file, identity))
+                    model_.sources.push_back({file, identity, "texture"});
+                texture = std::make_shared<const Texture>(
+                    read_texture(file, options_.max_texels, options_.confine, &model_.sources));
             }
         } catch (const std::runtime_error& problem) {
-            model_.warnings.push_back(name_ + ": texture '" + printable(text, 80) + "': " + problem.what() + "; drawing its material's colour");
+            model_.warnings.push_back(name_ + ": texture '" + printable(text, 80) + "': " + problem.what() +
+                                      "; drawing its material's colour");
         }
         loaded_.emplace(text, texture);
         return texture;
@@ -196,13 +216,14 @@ private:
 }  // namespace
 
 ColourSpace colour_space_of(std::string format) {
-    std::transform(format.begin(), format.end(), format.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    std::transform(format.begin(), format.end(), format.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     if (format.starts_with(".")) format.erase(0, 1);
     return format == "ply" || format == "stl" ? ColourSpace::srgb : ColourSpace::linear;
 }
 
-void model_from_scene(const aiScene& scene, const std::filesystem::path& path, const std::string& name, ColourSpace colours,
-                      const ObjOptions& options, Model& model) {
+void model_from_scene(const aiScene& scene, const std::filesystem::path& path, const std::string& name,
+                      ColourSpace colours, const ObjOptions& options, Model& model) {
     try {
         SceneReader reader(scene, path, colours, options, model);
         PolygonSoup soup = reader.soup();

@@ -20,7 +20,7 @@ enum class ColourSpace { linear, srgb };
 
 // Appends the scene's parts to `model`; `path` places the files it names and `name` is for
 // messages. Throws std::runtime_error naming `name` for a scene it cannot use.
-void model_from_scene(const aiScene& scene, const std::filesystem::path& path, const std::string& name, ColourSpace colours,
-                      const ObjOptions& options, Model& model);
+void model_from_scene(const aiScene& scene, const std::filesystem::path& path, const std::string& name,
+                      ColourSpace colours, const ObjOptions& options, Model& model);
 
 }  // namespace raster::detail

@@ -27,8 +27,9 @@ struct Picture {
         picture.use_argb = 1;
         picture.width = image.width();
         picture.height = image.height();
-        const bool imported = alpha.empty() ? WebPPictureImportRGB(&picture, image.bytes().data(), image.width() * 3) != 0
-                                            : WebPPictureImportRGBA(&picture, rgba_bytes(image, alpha).data(), image.width() * 4) != 0;
+        const bool imported =
+            alpha.empty() ? WebPPictureImportRGB(&picture, image.bytes().data(), image.width() * 3) != 0
+                          : WebPPictureImportRGBA(&picture, rgba_bytes(image, alpha).data(), image.width() * 4) != 0;
         if (!imported) {
             throw std::runtime_error("out of memory importing a frame");
         }
@@ -53,14 +54,15 @@ struct AnimationEncoder::State {
     std::optional<detail::ParallelFrames> parallel;
 
     State(int w, int h, int spacing, AnimationSettings settings)
-        : width(w), height(h), frame_spacing_ms(spacing), config(detail::lossless_config(settings.effort)), path(settings.path) {
+        : width(w), height(h), frame_spacing_ms(spacing), config(detail::lossless_config(settings.effort)),
+          path(settings.path) {
         if (w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide) {
             throw std::invalid_argument("animation size must be 1.." + std::to_string(kMaxImageSide) +
                                         " on each side, got " + std::to_string(w) + "x" + std::to_string(h));
         }
         if (spacing < 1 || spacing > kMaxFrameSpacingMs) {
-            throw std::invalid_argument("frame spacing must be 1.." + std::to_string(kMaxFrameSpacingMs) +
-                                        " ms, got " + std::to_string(spacing));
+            throw std::invalid_argument("frame spacing must be 1.." + std::to_string(kMaxFrameSpacingMs) + " ms, got " +
+                                        std::to_string(spacing));
         }
         if (settings.threads < 0) throw std::invalid_argument("thread count must be 0 (every core) or more");
         if (settings.tuning) {
@@ -74,7 +76,8 @@ struct AnimationEncoder::State {
             if (settings.tuning) config.method = settings.tuning->method, config.quality = settings.tuning->quality;
             // Frames in flight follow the cores, not the count asked for: more would only hold memory.
             const auto cores = static_cast<std::size_t>(available_cores());
-            const std::size_t threads = settings.threads > 0 ? std::min(static_cast<std::size_t>(settings.threads), cores) : cores;
+            const std::size_t threads =
+                settings.threads > 0 ? std::min(static_cast<std::size_t>(settings.threads), cores) : cores;
             parallel.emplace(width, height, frame_spacing_ms, config, threads, settings.effort == Effort::max);
             return;
         }
@@ -155,8 +158,8 @@ std::vector<std::uint8_t> AnimationEncoder::finish() {
     return bytes;
 }
 
-AnimationWriter::AnimationWriter(const std::filesystem::path& path, int width, int height,
-                                 int frame_spacing_ms, AnimationSettings settings, OutputPolicy policy)
+AnimationWriter::AnimationWriter(const std::filesystem::path& path, int width, int height, int frame_spacing_ms,
+                                 AnimationSettings settings, OutputPolicy policy)
     : path_(path), policy_(policy), encoder_(width, height, frame_spacing_ms, settings) {
     check_output_path(path_, policy_);
 }

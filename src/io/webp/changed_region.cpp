@@ -12,7 +12,9 @@ Region changed_region(const Framebuffer& before, const Framebuffer& after) {
     const std::uint8_t* a = before.bytes().data();
     const std::uint8_t* b = after.bytes().data();
     int top = h, bottom = -1, left = w, right = -1;
-    const auto same = [](const std::uint8_t* p, const std::uint8_t* q) { return p[0] == q[0] && p[1] == q[1] && p[2] == q[2]; };
+    const auto same = [](const std::uint8_t* p, const std::uint8_t* q) {
+        return p[0] == q[0] && p[1] == q[1] && p[2] == q[2];
+    };
     for (int y = 0; y < h; ++y) {
         const std::uint8_t* ra = a + static_cast<std::size_t>(y) * row_bytes;
         const std::uint8_t* rb = b + static_cast<std::size_t>(y) * row_bytes;

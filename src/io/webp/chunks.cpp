@@ -83,7 +83,8 @@ std::optional<AnimationFrame> parse_frame(std::span<const std::uint8_t> anmf_pay
     return frame;
 }
 
-AnimationAssembler::AnimationAssembler(int canvas_width, int canvas_height, std::uint32_t background_argb, int loop_count) {
+AnimationAssembler::AnimationAssembler(int canvas_width, int canvas_height, std::uint32_t background_argb,
+                                       int loop_count) {
     constexpr std::string_view head("RIFF\0\0\0\0WEBPVP8X", 16);
     bytes_.assign(head.begin(), head.end());
     put_le(bytes_, 10, 4);

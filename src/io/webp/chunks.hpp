@@ -27,7 +27,7 @@ struct AnimationFrame {
     int height = 0;
     int duration_ms = 0;
     bool dispose_to_background = false;
-    bool blend = true;  // drawn over what is there; false: replaces the rectangle
+    bool blend = true;                    // drawn over what is there; false: replaces the rectangle
     std::span<const std::uint8_t> image;  // an ALPH chunk and a VP8 one, or a VP8L one: what WebPDecode takes
 };
 

@@ -54,7 +54,8 @@ struct WebpFrameReader::State {
 
     void clear(const detail::AnimationFrame& area) {
         for (int y = area.y; y < area.y + area.height; ++y) {
-            const std::size_t at = static_cast<std::size_t>(y) * static_cast<std::size_t>(info.width) + static_cast<std::size_t>(area.x);
+            const std::size_t at =
+                static_cast<std::size_t>(y) * static_cast<std::size_t>(info.width) + static_cast<std::size_t>(area.x);
             std::fill_n(canvas->image.pixels() + at * 3, static_cast<std::size_t>(area.width) * 3, std::uint8_t{0});
             std::fill_n(canvas->alpha.begin() + static_cast<std::ptrdiff_t>(at), area.width, std::uint8_t{0});
         }
@@ -77,7 +78,8 @@ struct WebpFrameReader::State {
         config.options.use_threads = 0;
         const VP8StatusCode status = WebPDecode(frame.image.data(), frame.image.size(), &config);
         WebPFreeDecBuffer(&config.output);
-        if (status != VP8_STATUS_OK) corrupt("its picture does not decode (libwebp status " + std::to_string(status) + ")");
+        if (status != VP8_STATUS_OK)
+            corrupt("its picture does not decode (libwebp status " + std::to_string(status) + ")");
     }
 };
 
@@ -110,7 +112,8 @@ WebpFrameReader::WebpFrameReader(const std::filesystem::path& path, std::vector<
     const WebPData data{s.bytes.data(), s.bytes.size()};
     const std::unique_ptr<WebPDemuxer, void (*)(WebPDemuxer*)> demux(WebPDemux(&data), WebPDemuxDelete);
     if (!demux) throw std::runtime_error(s.name + " is not a WebP file raster can decode");
-    s.info = {static_cast<int>(WebPDemuxGetI(demux.get(), WEBP_FF_CANVAS_WIDTH)), static_cast<int>(WebPDemuxGetI(demux.get(), WEBP_FF_CANVAS_HEIGHT)),
+    s.info = {static_cast<int>(WebPDemuxGetI(demux.get(), WEBP_FF_CANVAS_WIDTH)),
+              static_cast<int>(WebPDemuxGetI(demux.get(), WEBP_FF_CANVAS_HEIGHT)),
               static_cast<int>(WebPDemuxGetI(demux.get(), WEBP_FF_FRAME_COUNT))};
     if ((WebPDemuxGetI(demux.get(), WEBP_FF_FORMAT_FLAGS) & ANIMATION_FLAG) != 0) {
         const std::optional<std::vector<detail::WebpChunk>> chunks = detail::webp_chunks(s.bytes);
@@ -123,8 +126,13 @@ WebpFrameReader::WebpFrameReader(const std::filesystem::path& path, std::vector<
     } else {
         WebPIterator still;
         if (WebPDemuxGetFrame(demux.get(), 1, &still)) {
-            s.frames.push_back({still.x_offset, still.y_offset, still.width, still.height, still.duration,
-                                still.dispose_method == WEBP_MUX_DISPOSE_BACKGROUND, still.blend_method == WEBP_MUX_BLEND,
+            s.frames.push_back({still.x_offset,
+                                still.y_offset,
+                                still.width,
+                                still.height,
+                                still.duration,
+                                still.dispose_method == WEBP_MUX_DISPOSE_BACKGROUND,
+                                still.blend_method == WEBP_MUX_BLEND,
                                 {still.fragment.bytes, still.fragment.size}});
             WebPDemuxReleaseIterator(&still);
         }
@@ -146,7 +154,8 @@ const DecodedFrame* WebpFrameReader::next() {
     if (s.next >= s.frames.size()) return nullptr;
     const detail::AnimationFrame& frame = s.frames[s.next];
     WebPBitstreamFeatures features;
-    if (WebPGetFeatures(frame.image.data(), frame.image.size(), &features) != VP8_STATUS_OK || features.has_animation != 0) {
+    if (WebPGetFeatures(frame.image.data(), frame.image.size(), &features) != VP8_STATUS_OK ||
+        features.has_animation != 0) {
         s.corrupt("its picture's header does not decode");
     }
     if (features.width != frame.width || features.height != frame.height || frame.x + frame.width > s.info.width ||
@@ -155,7 +164,8 @@ const DecodedFrame* WebpFrameReader::next() {
     }
     if (!s.canvas) {
         const auto pixels = static_cast<std::size_t>(s.info.width) * static_cast<std::size_t>(s.info.height);
-        s.canvas.emplace(DecodedFrame{Framebuffer(s.info.width, s.info.height), 0, 0, std::vector<std::uint8_t>(pixels, 0)});
+        s.canvas.emplace(
+            DecodedFrame{Framebuffer(s.info.width, s.info.height), 0, 0, std::vector<std::uint8_t>(pixels, 0)});
     }
     if (s.next > 0 && s.previous.dispose_to_background) s.clear(s.previous);
     // A key frame starts from a transparent canvas: WebPAnimDecoder's IsKeyFrame.
@@ -170,7 +180,8 @@ const DecodedFrame* WebpFrameReader::next() {
     std::uint8_t* rgb = s.canvas->image.pixels();
     for (int y = frame.y; y < frame.y + frame.height; ++y) {
         for (int x = frame.x; x < frame.x + frame.width; ++x, src += 4) {
-            const std::size_t at = static_cast<std::size_t>(y) * static_cast<std::size_t>(s.info.width) + static_cast<std::size_t>(x);
+            const std::size_t at =
+                static_cast<std::size_t>(y) * static_cast<std::size_t>(s.info.width) + static_cast<std::size_t>(x);
             std::uint8_t& alpha = s.canvas->alpha[at];
             if (blending && src[3] != 255 && !(s.previous.dispose_to_background && inside(s.previous, x, y))) {
                 blend_over(src, rgb + at * 3, alpha);

@@ -9,9 +9,11 @@
 
 namespace raster::detail {
 
-ParallelFrames::ParallelFrames(int width, int height, int frame_spacing_ms, const WebPConfig& config, std::size_t threads, bool try_blending)
-    : width_(width), height_(height), frame_spacing_ms_(frame_spacing_ms), config_(config), threads_(threads), try_blending_(try_blending),
-      pool_(std::make_unique<TaskPool<EncodedFrame>>(threads)), assembled_(width, height, 0xFF000000U, 0) {}  // opaque black background, loop forever
+ParallelFrames::ParallelFrames(int width, int height, int frame_spacing_ms, const WebPConfig& config,
+                               std::size_t threads, bool try_blending)
+    : width_(width), height_(height), frame_spacing_ms_(frame_spacing_ms), config_(config), threads_(threads),
+      try_blending_(try_blending), pool_(std::make_unique<TaskPool<EncodedFrame>>(threads)),
+      assembled_(width, height, 0xFF000000U, 0) {}  // opaque black background, loop forever
 
 ParallelFrames::~ParallelFrames() {
     pool_.reset();  // finishes the encodes still queued, then stops its threads
@@ -30,7 +32,9 @@ void ParallelFrames::add(const Framebuffer& frame) {
     std::uint8_t* to = opaque.data();
     std::uint8_t* faded = blended.data();
     for (int y = 0; y < region.height; ++y) {
-        const std::size_t at = (static_cast<std::size_t>(region.y + y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(region.x)) * 3;
+        const std::size_t at = (static_cast<std::size_t>(region.y + y) * static_cast<std::size_t>(width_) +
+                                static_cast<std::size_t>(region.x)) *
+                               3;
         const std::uint8_t* now = frame.bytes().data() + at;
         const std::uint8_t* before = try_blend ? previous_->bytes().data() + at : nullptr;
         std::copy(now, now + static_cast<std::size_t>(region.width) * 3, to);
@@ -43,23 +47,28 @@ void ParallelFrames::add(const Framebuffer& frame) {
             before += 3, faded += 4;
         }
     }
-    in_flight_.push_back(pool_->submit([opaque = std::move(opaque), blended = std::move(blended), region, config = config_] {
-        EncodedFrame best{encode_lossless(opaque.data(), region.width, region.height, region.width * 3, config), region, false};
-        if (!blended.empty()) {
-            WebPConfig see_through = config;
-            see_through.exact = 0;  // what lies under a transparent pixel is never seen
-            std::vector<std::uint8_t> bytes = encode_lossless(blended.data(), region.width, region.height, region.width * 4, see_through, 4);
-            if (bytes.size() < best.bytes.size()) best = {std::move(bytes), region, true};
-        }
-        return best;
-    }));
+    in_flight_.push_back(
+        pool_->submit([opaque = std::move(opaque), blended = std::move(blended), region, config = config_] {
+            EncodedFrame best{encode_lossless(opaque.data(), region.width, region.height, region.width * 3, config),
+                              region, false};
+            if (!blended.empty()) {
+                WebPConfig see_through = config;
+                see_through.exact = 0;  // what lies under a transparent pixel is never seen
+                std::vector<std::uint8_t> bytes =
+                    encode_lossless(blended.data(), region.width, region.height, region.width * 4, see_through, 4);
+                if (bytes.size() < best.bytes.size()) best = {std::move(bytes), region, true};
+            }
+            return best;
+        }));
     const auto row = static_cast<std::size_t>(region.width) * 3;
     if (previous_) {
         // Outside the rectangle the frames agree: only the rectangle needs copying.
         for (int y = region.y; y < region.y + region.height; ++y) {
-            const std::size_t at = (static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(region.x)) * 3;
-            std::copy(frame.bytes().begin() + static_cast<std::ptrdiff_t>(at), frame.bytes().begin() + static_cast<std::ptrdiff_t>(at + row),
-                      previous_->pixels() + at);
+            const std::size_t at =
+                (static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(region.x)) *
+                3;
+            std::copy(frame.bytes().begin() + static_cast<std::ptrdiff_t>(at),
+                      frame.bytes().begin() + static_cast<std::ptrdiff_t>(at + row), previous_->pixels() + at);
         }
     } else {
         previous_.emplace(frame);

@@ -29,7 +29,8 @@ class ParallelFrames {
 public:
     // At most `threads` encodes in flight; `try_blending` encodes each frame both opaque and
     // blended over the one before, and keeps the smaller.
-    ParallelFrames(int width, int height, int frame_spacing_ms, const WebPConfig& config, std::size_t threads, bool try_blending);
+    ParallelFrames(int width, int height, int frame_spacing_ms, const WebPConfig& config, std::size_t threads,
+                   bool try_blending);
     ~ParallelFrames();
     ParallelFrames(const ParallelFrames&) = delete;
     ParallelFrames& operator=(const ParallelFrames&) = delete;

@@ -35,29 +35,37 @@ std::vector<WebpChunk> chunks_of(std::span<const std::uint8_t> bytes, const std:
 }
 
 std::optional<FrameRange> range_in(const std::vector<WebpChunk>& chunks) {
-    const auto chunk = std::find_if(chunks.begin(), chunks.end(), [](const WebpChunk& c) { return c.tag == kRangeChunk; });
+    const auto chunk =
+        std::find_if(chunks.begin(), chunks.end(), [](const WebpChunk& c) { return c.tag == kRangeChunk; });
     if (chunk == chunks.end() || chunk->payload.size() != 16) return std::nullopt;
-    const std::uint32_t first = word_at(chunk->payload, 0), last = word_at(chunk->payload, 4), total = word_at(chunk->payload, 8),
-                        spacing = word_at(chunk->payload, 12);
-    if (!(first <= last && last < total && total <= static_cast<std::uint32_t>(std::numeric_limits<int>::max()))) return std::nullopt;
+    const std::uint32_t first = word_at(chunk->payload, 0), last = word_at(chunk->payload, 4),
+                        total = word_at(chunk->payload, 8), spacing = word_at(chunk->payload, 12);
+    if (!(first <= last && last < total && total <= static_cast<std::uint32_t>(std::numeric_limits<int>::max())))
+        return std::nullopt;
     if (!(spacing >= 1 && spacing <= static_cast<std::uint32_t>(kMaxFrameSpacingMs))) return std::nullopt;
-    return FrameRange{static_cast<int>(first), static_cast<int>(last), static_cast<int>(total), static_cast<int>(spacing)};
+    return FrameRange{static_cast<int>(first), static_cast<int>(last), static_cast<int>(total),
+                      static_cast<int>(spacing)};
 }
 
 std::size_t frames_in(const std::vector<WebpChunk>& chunks) {
-    return static_cast<std::size_t>(std::count_if(chunks.begin(), chunks.end(), [](const WebpChunk& c) { return c.tag == "ANMF"; }));
+    return static_cast<std::size_t>(
+        std::count_if(chunks.begin(), chunks.end(), [](const WebpChunk& c) { return c.tag == "ANMF"; }));
 }
 
 std::string frames_text(int first, int last) {
-    return first == last ? "frame " + std::to_string(first) : "frames " + std::to_string(first) + ".." + std::to_string(last);
+    return first == last ? "frame " + std::to_string(first)
+                         : "frames " + std::to_string(first) + ".." + std::to_string(last);
 }
 
-std::string in_no_part(int first, int last) { return frames_text(first, last) + (first == last ? " is" : " are") + " in no part"; }
+std::string in_no_part(int first, int last) {
+    return frames_text(first, last) + (first == last ? " is" : " are") + " in no part";
+}
 
 std::vector<std::uint8_t> range_chunk(FrameRange range) {
     std::vector<std::uint8_t> chunk{'R', 'N', 'G', 'E', 16, 0, 0, 0};
     for (const int value : {range.first, range.last, range.total, range.spacing_ms}) {
-        for (std::size_t b = 0; b < 4; ++b) chunk.push_back(static_cast<std::uint8_t>(static_cast<std::uint32_t>(value) >> (8 * b)));
+        for (std::size_t b = 0; b < 4; ++b)
+            chunk.push_back(static_cast<std::uint8_t>(static_cast<std::uint32_t>(value) >> (8 * b)));
     }
     return chunk;
 }
@@ -77,7 +85,8 @@ std::vector<std::uint8_t> mark_frame_range(std::span<const std::uint8_t> animati
             if (chunk.payload.size() & 1U) bytes.push_back(0);
         }
         bytes.insert(bytes.end(), marker.begin(), marker.end());
-        if (bytes.size() - 8 > 0xFFFFFFFEU) throw std::runtime_error("cannot mark the animation's frame range: it would pass WebP's 4 GiB");
+        if (bytes.size() - 8 > 0xFFFFFFFEU)
+            throw std::runtime_error("cannot mark the animation's frame range: it would pass WebP's 4 GiB");
         for (std::size_t b = 0; b < 4; ++b) bytes[4 + b] = static_cast<std::uint8_t>((bytes.size() - 8) >> (8 * b));
         return bytes;
     }
@@ -87,7 +96,8 @@ std::vector<std::uint8_t> mark_frame_range(std::span<const std::uint8_t> animati
     const WebPData chunk{marker.data() + 8, 16};
     WebPData out;
     WebPDataInit(&out);
-    if (!mux || WebPMuxSetChunk(mux.get(), "RNGE", &chunk, 1) != WEBP_MUX_OK || WebPMuxAssemble(mux.get(), &out) != WEBP_MUX_OK) {
+    if (!mux || WebPMuxSetChunk(mux.get(), "RNGE", &chunk, 1) != WEBP_MUX_OK ||
+        WebPMuxAssemble(mux.get(), &out) != WEBP_MUX_OK) {
         throw std::runtime_error("cannot mark the animation's frame range");
     }
     std::vector<std::uint8_t> bytes(out.bytes, out.bytes + out.size);
@@ -119,13 +129,17 @@ std::vector<std::uint8_t> assemble_parts(std::vector<AnimationPart> parts) {
         const std::string name = "'" + printable(part.name) + "'";
         std::vector<WebpChunk> chunks = chunks_of(part.bytes, name);
         const std::optional<FrameRange> range = range_in(chunks);
-        if (!range) throw std::runtime_error(name + " is not a part: it has no frame range (render it with --frame-range)");
+        if (!range)
+            throw std::runtime_error(name + " is not a part: it has no frame range (render it with --frame-range)");
         // A marked file is extended: its canvas is in the VP8X chunk that comes first.
-        if (chunks.front().tag != "VP8X" || chunks.front().payload.size() < 10) throw std::runtime_error(name + " has no canvas");
-        const int w = static_cast<int>(word_at(chunks.front().payload, 4, 3)) + 1, h = static_cast<int>(word_at(chunks.front().payload, 7, 3)) + 1;
+        if (chunks.front().tag != "VP8X" || chunks.front().payload.size() < 10)
+            throw std::runtime_error(name + " has no canvas");
+        const int w = static_cast<int>(word_at(chunks.front().payload, 4, 3)) + 1,
+                  h = static_cast<int>(word_at(chunks.front().payload, 7, 3)) + 1;
         opened.push_back({&part, std::move(chunks), *range, w, h});
     }
-    std::sort(opened.begin(), opened.end(), [](const Opened& a, const Opened& b) { return a.range.first < b.range.first; });
+    std::sort(opened.begin(), opened.end(),
+              [](const Opened& a, const Opened& b) { return a.range.first < b.range.first; });
     const Opened& head = opened.front();
     const int width = head.width, height = head.height;
     detail::AnimationAssembler whole(width, height, 0xFF000000U, 0);  // as AnimationEncoder writes: loop forever
@@ -134,17 +148,21 @@ std::vector<std::uint8_t> assemble_parts(std::vector<AnimationPart> parts) {
     for (const Opened& piece : opened) {
         const std::string name = "'" + printable(piece.part->name) + "'";
         if (piece.width != width || piece.height != height) {
-            throw std::runtime_error(name + " is " + std::to_string(piece.width) + "x" + std::to_string(piece.height) + ", the others " +
-                                     std::to_string(width) + "x" + std::to_string(height));
+            throw std::runtime_error(name + " is " + std::to_string(piece.width) + "x" + std::to_string(piece.height) +
+                                     ", the others " + std::to_string(width) + "x" + std::to_string(height));
         }
         if (piece.range.total != head.range.total) {
-            throw std::runtime_error(name + " is part of a clip of " + std::to_string(piece.range.total) + " frames, '" +
-                                     printable(head.part->name) + "' of " + std::to_string(head.range.total));
+            throw std::runtime_error(name + " is part of a clip of " + std::to_string(piece.range.total) +
+                                     " frames, '" + printable(head.part->name) + "' of " +
+                                     std::to_string(head.range.total));
         }
         if (piece.range.first > next) throw std::runtime_error(in_no_part(next, piece.range.first - 1));
-        if (piece.range.first < next) throw std::runtime_error(name + " repeats " + frames_text(piece.range.first, std::min(next - 1, piece.range.last)));
+        if (piece.range.first < next)
+            throw std::runtime_error(name + " repeats " +
+                                     frames_text(piece.range.first, std::min(next - 1, piece.range.last)));
         if (piece.range.spacing_ms != spacing) {
-            throw std::runtime_error(name + " shows frames for " + std::to_string(piece.range.spacing_ms) + " ms, the others for " + std::to_string(spacing));
+            throw std::runtime_error(name + " shows frames for " + std::to_string(piece.range.spacing_ms) +
+                                     " ms, the others for " + std::to_string(spacing));
         }
         // libwebp's own encoder merges a repeated frame into the one before, lengthening it, so
         // a part is checked by how long its frames last, not by how many it stores.
@@ -155,7 +173,9 @@ std::vector<std::uint8_t> assemble_parts(std::vector<AnimationPart> parts) {
             if (chunk.tag != "ANMF") continue;
             const std::int64_t shown = piece.range.first + lasts_ms / spacing;  // the clip's number for this frame
             const std::optional<detail::AnimationFrame> frame = detail::parse_frame(chunk.payload);
-            if (!frame) throw std::runtime_error(name + " has a corrupt frame " + std::to_string(shown) + ": its chunk holds no picture");
+            if (!frame)
+                throw std::runtime_error(name + " has a corrupt frame " + std::to_string(shown) +
+                                         ": its chunk holds no picture");
             frames.push_back(*frame);
             lasts_ms += frame->duration_ms;
         }
@@ -164,7 +184,8 @@ std::vector<std::uint8_t> assemble_parts(std::vector<AnimationPart> parts) {
             detail::AnimationFrame still;
             still.image = detail::picture_in(bytes.subspan(12));
             if (expected_ms > kMaxFrameSpacingMs) {
-                throw std::runtime_error(name + " holds one picture for " + std::to_string(expected_ms) + " ms, longer than a WebP frame lasts");
+                throw std::runtime_error(name + " holds one picture for " + std::to_string(expected_ms) +
+                                         " ms, longer than a WebP frame lasts");
             }
             still.duration_ms = static_cast<int>(expected_ms);
             still.width = width, still.height = height;
@@ -173,22 +194,28 @@ std::vector<std::uint8_t> assemble_parts(std::vector<AnimationPart> parts) {
         lasts_ms = 0;
         for (std::size_t k = 0; k < frames.size(); ++k) {
             detail::AnimationFrame frame = frames[k];
-            const std::string corrupt = name + " has a corrupt frame " + std::to_string(piece.range.first + lasts_ms / spacing) + ": ";
-            // Every picture's header is checked, so that a damaged frame is refused here rather than copied into a clip that does not play.
+            const std::string corrupt =
+                name + " has a corrupt frame " + std::to_string(piece.range.first + lasts_ms / spacing) + ": ";
+            // Every picture's header is checked, so that a damaged frame is refused here rather than copied into a clip
+            // that does not play.
             WebPBitstreamFeatures features;
-            if (frame.image.empty() || WebPGetFeatures(frame.image.data(), frame.image.size(), &features) != VP8_STATUS_OK ||
+            if (frame.image.empty() ||
+                WebPGetFeatures(frame.image.data(), frame.image.size(), &features) != VP8_STATUS_OK ||
                 features.has_animation != 0) {
                 throw std::runtime_error(corrupt + "its picture does not decode");
             }
             if (features.width != frame.width || features.height != frame.height) {
-                throw std::runtime_error(corrupt + "its picture is " + std::to_string(features.width) + "x" + std::to_string(features.height) +
-                                         ", its rectangle " + std::to_string(frame.width) + "x" + std::to_string(frame.height));
+                throw std::runtime_error(corrupt + "its picture is " + std::to_string(features.width) + "x" +
+                                         std::to_string(features.height) + ", its rectangle " +
+                                         std::to_string(frame.width) + "x" + std::to_string(frame.height));
             }
             if (frame.x + frame.width > width || frame.y + frame.height > height) {
-                throw std::runtime_error(corrupt + "its rectangle leaves the " + std::to_string(width) + "x" + std::to_string(height) + " canvas");
+                throw std::runtime_error(corrupt + "its rectangle leaves the " + std::to_string(width) + "x" +
+                                         std::to_string(height) + " canvas");
             }
             if (frame.duration_ms <= 0 || frame.duration_ms % spacing != 0) {
-                throw std::runtime_error(name + " has a frame lasting " + std::to_string(frame.duration_ms) + " ms, not a multiple of " + std::to_string(spacing));
+                throw std::runtime_error(name + " has a frame lasting " + std::to_string(frame.duration_ms) +
+                                         " ms, not a multiple of " + std::to_string(spacing));
             }
             lasts_ms += frame.duration_ms;
             if (k == 0) {
@@ -201,8 +228,9 @@ std::vector<std::uint8_t> assemble_parts(std::vector<AnimationPart> parts) {
             whole.add_frame(frame, features.has_alpha != 0);
         }
         if (lasts_ms != expected_ms) {
-            throw std::runtime_error(name + " lasts " + std::to_string(lasts_ms) + " ms, but its range " + frames_text(piece.range.first, piece.range.last) +
-                                     " lasts " + std::to_string(expected_ms));
+            throw std::runtime_error(name + " lasts " + std::to_string(lasts_ms) + " ms, but its range " +
+                                     frames_text(piece.range.first, piece.range.last) + " lasts " +
+                                     std::to_string(expected_ms));
         }
         next = piece.range.last + 1;
     }
