@@ -1,4 +1,4 @@
-// One lab program, three measures written into one summary; stays whole so it reads top to bottom.
+// Stays whole: the interpolation measure and the summary of all three read top to bottom.
 // perspective-lab: the choices of the perspective pipeline measured against exact answers.
 //  1. Interpolation: affine (linear on screen) against through 1/w, on a floor seen at grazing
 //     angles, as the error of texture coordinates in texels against the ray-cast truth, and time.
@@ -8,6 +8,8 @@
 #include "lab_args.hpp"
 
 #include <raster/shade/shaders.hpp>
+#include "perspective_clip_depth.hpp"
+#include "perspective_floor.hpp"
 #include "rasterize/setup_perspective.hpp"
 #include "recording_shader.hpp"
 
@@ -29,7 +31,8 @@
 
 namespace {
 
-constexpr int kWidth = 800, kHeight = 600;
+using namespace perspective_lab;
+
 constexpr double kTexelsPerUnit = 256.0;  // a 256 x 256 texture repeated once per world unit
 
 std::string number(double v, const char* format) {
@@ -63,11 +66,6 @@ raster::Mesh floor_grid(int n) {
     return mesh;
 }
 
-raster::PerspectiveCamera grazing_camera(double degrees) {
-    return raster::PerspectiveCamera::first_person(kWidth, kHeight, {0, 0, 0}, -degrees * std::numbers::pi / 180.0, 0.0,
-                                                   {60.0, 0.1, 100.0});
-}
-
 // What a texture lookup costs at least: a checkerboard from the interpolated coordinates.
 struct Checkerboard {
     using Varying = glm::vec3;
@@ -79,25 +77,6 @@ struct Checkerboard {
         return dark ? raster::Rgb{40, 40, 40} : raster::Rgb{220, 220, 220};
     }
 };
-
-// The floor point seen at screen point (x, y) (pixel (i, j) has its centre at i + 0.5, j + 0.5),
-// or nothing above the horizon.
-std::optional<glm::dvec2> floor_at_point(const raster::PerspectiveCamera& camera, double x, double y) {
-    // Invert the viewport and projection: a direction in view space, then in the world.
-    const double t = std::tan(camera.lens().fov_y_degrees * std::numbers::pi / 360.0);
-    const double x_ndc = x * 2.0 / kWidth - 1.0, y_ndc = 1.0 - y * 2.0 / kHeight;
-    const glm::dvec3 forward(camera.direction());
-    const glm::dvec3 right = glm::normalize(glm::cross(glm::dvec3(0, 1, 0), forward));
-    const glm::dvec3 up = glm::cross(forward, right);
-    const glm::dvec3 ray = forward + right * (x_ndc * t * kWidth / kHeight) + up * (y_ndc * t);
-    if (!(ray.y < 0.0)) return std::nullopt;
-    const double s = -1.0 / ray.y;  // from the eye at the origin down to y = -1
-    return glm::dvec2(ray.x * s, ray.z * s);
-}
-
-std::optional<glm::dvec2> floor_at(const raster::PerspectiveCamera& camera, int i, int j) {
-    return floor_at_point(camera, i + 0.5, j + 0.5);
-}
 
 // The mip level a filter would choose at pixel (i, j) from texture coordinate changes per pixel
 // step dx and dy (world units): log2 of the longer, in texels.
@@ -218,102 +197,6 @@ InterpolationRow measure_interpolation(raster::detail::Interpolation mode, int c
     }
     row.ms = lab::median(times);
     return row;
-}
-
-struct ClippingRow {
-    std::string scene;
-    int fov;
-    long differing;
-    double six_plane_ms, guard_band_ms;
-};
-
-ClippingRow measure_clipping(std::string_view name, int fov) {
-    const raster::Scene flat = raster::DiaryScene(name).still(kWidth, kHeight);
-    const raster::PerspectiveScene scene = raster::in_perspective(flat, kWidth, kHeight, fov);
-    const auto draw = [&](raster::Framebuffer& image, double band) {
-        image.clear(scene.background);
-        raster::DepthBuffer depth;
-        depth.prepare(kWidth, kHeight);
-        for (const raster::SceneObject& object : scene.objects) {
-            const raster::Mesh mesh = raster::posed(*object.mesh, object.model);
-            const raster::LinearLighting lighting(std::get<raster::LinearMaterial>(object.material), scene.lights,
-                                                  scene.point_lights, -scene.camera.direction(), scene.camera.eye());
-            raster::detail::draw_facets_in_perspective(image, &depth, scene.camera, mesh,
-                                                       raster::LinearPhongShader{&lighting}, band);
-        }
-    };
-    raster::Framebuffer six(kWidth, kHeight), guard(kWidth, kHeight);
-    std::vector<double> six_ms, guard_ms;
-    for (int r = 0; r < 31; ++r) {  // interleaved
-        auto start = std::chrono::steady_clock::now();
-        draw(six, 0.0);
-        six_ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-        start = std::chrono::steady_clock::now();
-        draw(guard, raster::detail::kGuardBandPixels);
-        guard_ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-    }
-    long differing = 0;
-    for (int j = 0; j < kHeight; ++j) {
-        for (int i = 0; i < kWidth; ++i) differing += six.pixel(i, j) != guard.pixel(i, j) ? 1 : 0;
-    }
-    return {std::string(name), fov, differing, lab::median(six_ms), lab::median(guard_ms)};
-}
-
-// Two floors 1e-5 apart seen from 1 above the nearer, looking 10 degrees down: at each pixel the
-// nearer floor must win. Each encoding turns the exact view depths of both into what a buffer
-// would store; a pixel is wrong when the farther floor's code is not larger.
-struct DepthEncoding {
-    std::string name;
-    double (*code)(double w, double near, double far);
-};
-
-float as_float(double v) { return static_cast<float>(v); }
-
-const std::vector<DepthEncoding>& encodings() {
-    static const std::vector<DepthEncoding> all{
-        {"w as float (product)", [](double w, double, double) { return double{as_float(w)}; }},
-        {"z/w as float", [](double w, double n, double f) { return double{as_float(f * (w - n) / ((f - n) * w))}; }},
-        {"reversed z/w as float",
-         [](double w, double n, double f) { return -double{as_float(n * (f - w) / ((f - n) * w))}; }},
-        {"z/w in 24-bit fixed",
-         [](double w, double n, double f) { return std::floor(f * (w - n) / ((f - n) * w) * 16777215.0 + 0.5); }},
-        {"1/w as float", [](double w, double, double) { return -double{as_float(1.0 / w)}; }},
-    };
-    return all;
-}
-
-struct DepthRow {
-    std::string encoding;
-    double ratio;
-    long wrong, compared;
-};
-
-std::vector<DepthRow> measure_depth() {
-    std::vector<DepthRow> rows;
-    const double gap = 1e-5, far = 1000.0;
-    const raster::PerspectiveCamera camera = grazing_camera(10.0);
-    for (const double ratio : {1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7}) {
-        const double near = far / ratio;
-        for (const DepthEncoding& encoding : encodings()) {
-            DepthRow row{encoding.name, ratio, 0, 0};
-            for (int j = 0; j < kHeight; ++j) {
-                for (int i = 0; i < kWidth; ++i) {
-                    const std::optional<glm::dvec2> hit = floor_at(camera, i, j);
-                    if (!hit) continue;
-                    // View depth along the camera's forward axis, for the floor at y = -1 and the
-                    // one `gap` below it: the same ray, scaled by the heights.
-                    const glm::dvec3 point(hit->x, -1.0, hit->y);
-                    const double w_near = glm::dot(point, glm::dvec3(camera.direction()));
-                    const double w_far = w_near * (1.0 + gap);
-                    if (w_near < near || w_far > far) continue;
-                    ++row.compared;
-                    if (!(encoding.code(w_far, near, far) > encoding.code(w_near, near, far))) ++row.wrong;
-                }
-            }
-            rows.push_back(row);
-        }
-    }
-    return rows;
 }
 
 }  // namespace
