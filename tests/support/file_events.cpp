@@ -76,8 +76,8 @@ bool DirectoryEvents::next(pid_t pid, Event& event) {
     // By number: Debian 12's <sys/pidfd.h> declares pidfd_open without extern "C".
     const int process = static_cast<int>(::syscall(SYS_pidfd_open, pid, 0));
     if (process < 0) throw std::runtime_error(std::string("pidfd_open: ") + std::strerror(errno));
-    bool found = false;
-    while (!found) {
+    bool found = false, ended = false;
+    for (;;) {
         take_events(pending_, [&](const inotify_event& raw, const std::string& name) {
             if (found) return false;
             if ((raw.mask & (IN_CREATE | IN_DELETE | IN_MOVED_FROM)) == 0) return true;  // IN_IGNORED and such
@@ -85,19 +85,20 @@ bool DirectoryEvents::next(pid_t pid, Event& event) {
             found = true;
             return true;
         });
-        if (found) break;
+        if (found || ended) break;
         pollfd waits[2] = {{descriptor_, POLLIN, 0}, {process, POLLIN, 0}};
         if (::poll(waits, 2, -1) < 0) {
             if (errno == EINTR) continue;
             ::close(process);
             throw std::runtime_error(std::string("poll: ") + std::strerror(errno));
         }
-        if ((waits[0].revents & POLLIN) != 0) {
+        ended = waits[1].revents != 0;
+        // Looked at again after the end was seen: every event the process caused is queued by then.
+        pollfd queued{descriptor_, POLLIN, 0};
+        if (::poll(&queued, 1, 0) > 0 && (queued.revents & POLLIN) != 0) {
             char buffer[4096];
             const ::ssize_t got = ::read(descriptor_, buffer, sizeof buffer);
             if (got > 0) pending_.append(buffer, static_cast<std::size_t>(got));
-        } else if (waits[1].revents != 0) {
-            break;  // the process ended, and every event it caused is already queued
         }
     }
     ::close(process);
