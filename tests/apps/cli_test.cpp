@@ -4,12 +4,11 @@
 #include <raster/scenes/scenes.hpp>
 #include <raster/version.hpp>
 
+#include "support/file_events.hpp"
 #include "support/scratch.hpp"
 
-#include <chrono>
 #include <csignal>
 #include <sstream>
-#include <thread>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
@@ -27,6 +26,13 @@ const std::vector<std::string> kApps{
     kStillCube, kAnimatedCube, kStillUnitCube, kWebpFrame, test_support::kStillScene, test_support::kAnimatedScene};
 
 std::string name_of(const std::string& program) { return std::filesystem::path(program).filename().string(); }
+
+// Waits until the started exporter has made and removed its probe, the temporary file that shows
+// the directory takes the output before any frame is drawn; false if it ended or did otherwise.
+bool probed(test_support::DirectoryEvents& events, int pid) {
+    test_support::DirectoryEvents::Event made, gone;
+    return events.next(pid, made) && made.created && events.next(pid, gone) && !gone.created && gone.name == made.name;
+}
 
 Framebuffer still_cube() {
     Framebuffer image(raster::kSceneWidth, raster::kSceneHeight);
@@ -168,19 +174,47 @@ TEST(Cli, NamesOfTwoHundredFiftyFiveBytesWork) {
 
 TEST(Cli, InterruptsLeaveNoFileBehindAndTheExistingOutputUnchanged) {
     for (const int signal : {SIGINT, SIGTERM, SIGHUP}) {
+        SCOPED_TRACE(strsignal(signal));
         const ScratchDir dir;
         test_support::write_text(dir / "existing.webp", "precious");
+        test_support::DirectoryEvents events(dir.path());
+        // Once probed, the exporter draws ten thousand frames before it writes: the signal lands mid-drawing.
         const int pid = test_support::start(kAnimatedCube, {"--frames", "10000", "existing.webp"}, dir.path());
-        std::this_thread::sleep_for(std::chrono::milliseconds(700));
+        EXPECT_TRUE(probed(events, pid));
         ::kill(pid, signal);
-        EXPECT_EQ(test_support::wait_for_signal(pid), signal) << strsignal(signal);
-        EXPECT_EQ(dir.entries(), std::vector<std::string>{"existing.webp"}) << strsignal(signal);
-        EXPECT_EQ(test_support::read_text(dir / "existing.webp"), "precious") << strsignal(signal);
+        EXPECT_EQ(test_support::wait_for_signal(pid), signal);
+        EXPECT_EQ(dir.entries(), std::vector<std::string>{"existing.webp"});
+        EXPECT_EQ(test_support::read_text(dir / "existing.webp"), "precious");
         const int fresh = test_support::start(kAnimatedCube, {"--frames", "10000", "new.webp"}, dir.path());
-        std::this_thread::sleep_for(std::chrono::milliseconds(300));
+        EXPECT_TRUE(probed(events, fresh));
         ::kill(fresh, signal);
         EXPECT_EQ(test_support::wait_for_signal(fresh), signal);
-        EXPECT_EQ(dir.entries(), std::vector<std::string>{"existing.webp"}) << strsignal(signal);
+        EXPECT_EQ(dir.entries(), std::vector<std::string>{"existing.webp"});
+    }
+}
+
+TEST(Cli, AnInterruptWhileTheOutputIsWrittenWaitsForTheWholeFileThenEndsTheProgram) {
+    constexpr int kFrames = 4;
+    constexpr int kAttempts = 10;
+    for (const int signal : {SIGINT, SIGTERM, SIGHUP}) {
+        SCOPED_TRACE(strsignal(signal));
+        bool caught = false;
+        // The writer is stopped as its temporary file appears; a write that ended before it stopped is tried again.
+        for (int attempt = 0; attempt < kAttempts && !caught; ++attempt) {
+            const ScratchDir dir;
+            test_support::write_text(dir / "existing.webp", "precious");
+            test_support::DirectoryEvents events(dir.path());
+            const int pid =
+                test_support::start(kAnimatedCube, {"--frames", std::to_string(kFrames), "existing.webp"}, dir.path());
+            test_support::DirectoryEvents::Event temporary;
+            ASSERT_TRUE(probed(events, pid) && events.next(pid, temporary) && temporary.created);
+            caught = test_support::signal_while_present(pid, dir / temporary.name, signal);
+            EXPECT_EQ(test_support::wait_for_signal(pid), caught ? signal : 0);
+            EXPECT_EQ(dir.entries(), std::vector<std::string>{"existing.webp"}) << "no temporary file is left";
+            EXPECT_EQ(raster::read_webp(dir / "existing.webp").frames.size(), std::size_t{kFrames})
+                << "the new file is whole";
+        }
+        if (!caught) GTEST_SKIP() << "in " << kAttempts << " tries every write ended before its writer was stopped";
     }
 }
 

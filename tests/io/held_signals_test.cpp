@@ -5,10 +5,13 @@
 
 #include <array>
 #include <atomic>
-#include <chrono>
 #include <csignal>
+#include <fstream>
+#include <iterator>
 #include <optional>
+#include <string>
 #include <thread>
+#include <unistd.h>
 
 namespace {
 
@@ -42,6 +45,14 @@ void (*current_handler(int signal))(int) {
     return now.sa_handler;
 }
 
+// The state /proc gives a thread of this process: 'S' while it sleeps in a wait, '\0' once it is gone.
+char thread_state(pid_t thread) {
+    std::ifstream stat("/proc/self/task/" + std::to_string(thread) + "/stat");
+    const std::string text{std::istreambuf_iterator<char>(stat), std::istreambuf_iterator<char>()};
+    const std::size_t name_end = text.rfind(')');  // the thread's name may hold spaces and brackets
+    return name_end == std::string::npos || name_end + 2 >= text.size() ? '\0' : text[name_end + 2];
+}
+
 }  // namespace
 
 TEST(HeldSignals, ASignalThatCameWhileHeldIsRaisedOnceWhenTheLastHolderOnAnyThreadIsGone) {
@@ -68,12 +79,16 @@ TEST(HeldSignals, AHolderOnAnotherThreadWaitsUntilASignalThatCameHasBeenRaised) 
     const CountingHandler counting;
     std::optional<raster::HeldSignals> first(std::in_place, kUser1);
     ::raise(SIGUSR1);
+    std::atomic<pid_t> second_thread = 0;
     std::atomic<bool> started = false;
     std::thread second([&] {
+        second_thread = ::gettid();
         const raster::HeldSignals next(kUser1);
         started = true;
     });
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    while (second_thread == 0) std::this_thread::yield();
+    // Asleep before it holds: the one wait on its way there is the holder's own.
+    while (!started && thread_state(second_thread) != 'S') std::this_thread::yield();
     EXPECT_FALSE(started) << "a new holder would put the signal off";
     first.reset();
     second.join();

@@ -1,8 +1,8 @@
 #include <raster/io/output_file.hpp>
 
+#include "support/file_events.hpp"
 #include "support/scratch.hpp"
 
-#include <chrono>
 #include <csignal>
 #include <stdexcept>
 #include <string>
@@ -144,6 +144,7 @@ TEST(OutputFile, ASignalWhileTheTemporaryFileExistsWaitsUntilTheNewFileIsInPlace
     const ScratchDir dir;
     test_support::write_text(dir / "out.webp", "old");
     const std::vector<std::uint8_t> big(std::size_t{256} << 20, 'n');  // long enough to catch in the act
+    test_support::DirectoryEvents events(dir.path());
     const pid_t child = ::fork();
     ASSERT_GE(child, 0);
     if (child == 0) {
@@ -151,15 +152,11 @@ TEST(OutputFile, ASignalWhileTheTemporaryFileExistsWaitsUntilTheNewFileIsInPlace
         write_output_file(dir / "out.webp", big);
         ::_exit(0);
     }
-    bool caught = false;
-    for (int poll = 0; poll < 200000 && !caught; ++poll) {
-        for (const auto& entry : fs::directory_iterator(dir.path())) {
-            if (entry.path().filename().string().starts_with(".raster-")) caught = true;
-        }
-    }
-    ::kill(child, SIGTERM);
+    test_support::DirectoryEvents::Event temporary;
+    ASSERT_TRUE(events.next(child, temporary) && temporary.created) << "no temporary file was made";
+    const bool caught = test_support::signal_while_present(child, dir / temporary.name, SIGTERM);
     EXPECT_EQ(test_support::wait_for_signal(child), caught ? SIGTERM : 0);
-    if (!caught) GTEST_SKIP() << "the write finished before the temporary file was seen";
+    if (!caught) GTEST_SKIP() << "the write finished before the writer was stopped";
     EXPECT_EQ(dir.entries(), std::vector<std::string>{"out.webp"}) << "no temporary file is left";
     EXPECT_EQ(fs::file_size(dir / "out.webp"), big.size()) << "the signal waited for the new file";
 }
@@ -170,6 +167,7 @@ TEST(OutputFile, ASignalOnAnyThreadWhileSeveralThreadsWriteLeavesEachOutputOldOr
     const auto output = [&](int k) { return dir / ("out-" + std::to_string(k) + ".webp"); };
     for (int k = 0; k < kWriters; ++k) test_support::write_text(output(k), "old");
     const std::size_t size = std::size_t{16} << 20;
+    test_support::DirectoryEvents events(dir.path());
     const pid_t child = ::fork();
     ASSERT_GE(child, 0);
     if (child == 0) {
@@ -190,26 +188,15 @@ TEST(OutputFile, ASignalOnAnyThreadWhileSeveralThreadsWriteLeavesEachOutputOldOr
         for (std::thread& thread : threads) thread.join();
         ::_exit(0);
     }
-    bool writing = false;
-    for (int poll = 0; poll < 200000 && !writing; ++poll) {
-        for (const auto& entry : fs::directory_iterator(dir.path())) {
-            if (entry.path().filename().string().starts_with(".raster-")) writing = true;
-        }
-    }
+    test_support::DirectoryEvents::Event first;
+    const bool writing = events.next(child, first) && first.created;
     for (int repeat = 0; repeat < 3; ++repeat) {
         ::kill(child, SIGTERM);
         ::usleep(1000);
     }
+    // Writes that held the signal off for ever would be ctest's timeout to report.
     int status = 0;
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
-    while (::waitpid(child, &status, WNOHANG) == 0) {
-        if (std::chrono::steady_clock::now() > deadline) {
-            ::kill(child, SIGKILL);
-            ::waitpid(child, &status, 0);
-            FAIL() << "the writes held the signal off for 30 s";
-        }
-        ::usleep(1000);
-    }
+    ::waitpid(child, &status, 0);
     EXPECT_TRUE(writing) << "no temporary file was seen";
     EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM) << "status " << status;
     EXPECT_EQ(dir.entries(), (std::vector<std::string>{"out-0.webp", "out-1.webp", "out-2.webp"}))

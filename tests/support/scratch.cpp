@@ -116,6 +116,19 @@ int wait_for_signal(int pid) {
     return WIFSIGNALED(status) ? WTERMSIG(status) : 0;
 }
 
+bool signal_while_present(int pid, const fs::path& file, int signal) {
+    if (::kill(pid, SIGSTOP) != 0) return false;
+    siginfo_t state{};
+    // WNOWAIT: a program that ended meanwhile is left for wait_for_signal to reap.
+    if (::waitid(P_PID, static_cast<id_t>(pid), &state, WSTOPPED | WEXITED | WNOWAIT) != 0 ||
+        state.si_code != CLD_STOPPED)
+        return false;
+    const bool present = fs::exists(file);
+    if (present) ::kill(pid, signal);
+    ::kill(pid, SIGCONT);
+    return present;
+}
+
 std::string read_text(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
     std::ostringstream text;

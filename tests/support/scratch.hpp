@@ -44,6 +44,9 @@ int start(const std::string& program, const std::vector<std::string>& arguments,
           const std::filesystem::path& directory);
 // Waits for a started program; returns the signal that ended it, or 0 if it exited.
 int wait_for_signal(int pid);
+// Stops a started program and, if `file` exists while it is stopped, sends it `signal`, so that
+// the signal comes while the file is there; then lets it go on. Returns whether it sent it.
+bool signal_while_present(int pid, const std::filesystem::path& file, int signal);
 
 std::string read_text(const std::filesystem::path& path);
 std::vector<std::uint8_t> read_bytes(const std::filesystem::path& path);
