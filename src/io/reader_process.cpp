@@ -1,3 +1,4 @@
+// The reader's child end to end: limits, the trip back, the parent's checks; stays whole so they read together.
 #include "io/reader_process.hpp"
 
 #include "io/model_wire.hpp"

@@ -1,3 +1,4 @@
+// Each shape's mesh, its error and the detail plan built on it; stays whole so the estimate reads in one pass.
 #include <raster/render/auto_detail.hpp>
 
 #include <raster/geometry/analytic_shape.hpp>

@@ -1,3 +1,4 @@
+// Every exporter run as a user would; stays whole so that the programs' shared behaviour reads side by side.
 #include <raster/io/webp.hpp>
 #include <raster/scenes/scenes.hpp>
 

@@ -1,3 +1,4 @@
+// Frame ranges, restarts and assembly share one clip and its parts; stays whole so they read in order.
 // Frame ranges, restartable runs and lossless assembly, as a render farm runs them.
 #include <raster/io/webp.hpp>
 #include <raster/io/webp_parts.hpp>

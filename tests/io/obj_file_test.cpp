@@ -1,4 +1,4 @@
-// Reading OBJ models: geometry, normals, materials, textures, and every kind of bad input.
+// Reading OBJ models: geometry, normals, materials, textures, bad input; stays whole as the OBJ suite.
 #include <raster/io/input_file.hpp>
 #include <raster/io/model.hpp>
 #include <raster/io/obj_file.hpp>

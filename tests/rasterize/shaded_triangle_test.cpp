@@ -1,4 +1,4 @@
-// The one rasterizer behind every shader, driven directly with test shaders.
+// The one rasterizer driven directly with test shaders; stays whole so each fill rule reads beside the rest.
 #include <raster/shade/shaders.hpp>
 #include "rasterize/setup_ortho.hpp"
 

@@ -1,4 +1,4 @@
-// Textures: coordinates, filters, addressing, mip levels, and reading image files.
+// Textures: coordinates, filters, addressing, mip levels, files; stays whole as the one texture suite.
 #include <raster/image/colour.hpp>
 #include <raster/io/texture_file.hpp>
 #include <raster/io/webp.hpp>
