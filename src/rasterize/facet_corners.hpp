@@ -7,6 +7,8 @@
 #include <raster/rasterize/fill.hpp>
 #include <raster/rasterize/shader.hpp>
 
+#include "rasterize/triangle_loop.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -90,6 +92,20 @@ inline bool misses_rows(const std::array<SubpixelPoint, 3>& points, const PixelR
     const std::int32_t low = std::min({points[0].y, points[1].y, points[2].y});
     const std::int32_t high = std::max({points[0].y, points[1].y, points[2].y});
     return high < rows.y * kSubpixelOne || low > (rows.y + rows.height - 1) * kSubpixelOne;
+}
+
+// A snapped facet handed to `visit` with its corners' Varyings when it faces the camera
+// (positive snapped area, the numbers the fill uses); whether it did.
+template <typename Shader, typename Visit>
+bool visit_if_facing(std::array<ShadedCorner<typename Shader::Varying>, 3>& corners, const Shader& shader,
+                     const Mesh& mesh, const Facet& facet, const std::vector<typename Shader::Varying>& per_vertex,
+                     Visit& visit) {
+    const std::array<SubpixelPoint, 3> points{corners[0].at, corners[1].at, corners[2].at};
+    if (twice_signed_area(points) <= 0) return false;  // facing away, or seen edge-on
+    const std::array<typename Shader::Varying, 3> values = facet_varyings(shader, mesh, facet, per_vertex);
+    for (std::size_t k = 0; k < 3; ++k) corners[k].varying = values[k];
+    visit(corners);
+    return true;
 }
 
 }  // namespace raster::detail

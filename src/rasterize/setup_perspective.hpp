@@ -55,12 +55,7 @@ public:
                 std::array<ShadedCorner<Varying>, 3> corners{};
                 for (std::size_t k = 0; k < 3; ++k)
                     corners[k].at = *snapped_[facet.corners[k]], corners[k].depth = static_cast<float>(at[k].w);
-                const std::array<SubpixelPoint, 3> points{corners[0].at, corners[1].at, corners[2].at};
-                if (twice_signed_area(points) <= 0) continue;  // facing away or edge-on
-                ++drawn;
-                const std::array<Varying, 3> values = facet_varyings(shader_, mesh_, facet, varyings_);
-                for (std::size_t k = 0; k < 3; ++k) corners[k].varying = values[k];
-                visit(corners);
+                drawn += visit_if_facing(corners, shader_, mesh_, facet, varyings_, visit) ? 1 : 0;
                 continue;
             }
             drawn += clipped(facet, at, visit) ? 1 : 0;
