@@ -2,6 +2,7 @@
 
 #include <raster/image/framebuffer.hpp>
 #include <raster/image/lanes.hpp>
+#include <raster/rasterize/shader.hpp>
 
 #include <array>
 #include <cstdint>
@@ -12,13 +13,6 @@
 // stay open across triangles: pixels are written in the order they were added, so a later
 // triangle's pixel still lands over an earlier one's.
 namespace raster::detail {
-
-// A shader whose pixel stage also takes how its Varying changes per pixel step in x and in y:
-// texture filtering chooses its mip level from that.
-template <typename Shader>
-concept NeedsFootprint = requires(const Shader& shader, const typename Shader::Varying& varying) {
-    shader.pixel(varying, varying, varying);
-};
 
 // A shader that colours kLanes pixels at once; every shader of the library is one, and the
 // batch runs any other (a test's, the lab's) pixel by pixel through pixel().

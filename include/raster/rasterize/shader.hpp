@@ -30,20 +30,29 @@ concept Interpolable = std::copyable<Varying> && std::default_initializable<Vary
     { a* k } -> std::convertible_to<Varying>;
 };
 
-// kFacetNormal asks for the facet's normal (and its centroid as the position) at every corner
-// instead of the vertex attributes. pixel() takes the Varying alone, or also its change per
-// pixel step in x and y (texture filtering chooses its mip level from that).
+// A pixel stage that also takes how its Varying changes per pixel step in x and y: texture
+// filtering chooses its mip level from that.
 template <typename S>
-concept Shader = Interpolable<typename S::Varying> && requires(const S& shader, const Corner& corner) {
+concept NeedsFootprint = requires(const S& shader, const typename S::Varying& v) {
+    { shader.pixel(v, v, v) } -> std::convertible_to<Rgb>;
+};
+
+// kFacetNormal asks for the facet's normal (and its centroid as the position) at every corner
+// instead of the vertex attributes.
+template <typename S>
+concept VertexStage = requires(const S& shader, const Corner& corner) {
     { S::kFacetNormal } -> std::convertible_to<bool>;
     { shader.vertex(corner) } -> std::convertible_to<typename S::Varying>;
-} &&(
-    requires(const S& shader, const typename S::Varying& v) {
-        { shader.pixel(v) } -> std::convertible_to<Rgb>;
-    } ||
-    requires(const S& shader, const typename S::Varying& v) {
-        { shader.pixel(v, v, v) } -> std::convertible_to<Rgb>;
-    });
+};
+
+template <typename S>
+concept PlainPixelStage = requires(const S& shader, const typename S::Varying& v) {
+    { shader.pixel(v) } -> std::convertible_to<Rgb>;
+};
+
+// pixel() takes the Varying alone, or with its footprint.
+template <typename S>
+concept Shader = Interpolable<typename S::Varying> && VertexStage<S> &&(PlainPixelStage<S> || NeedsFootprint<S>);
 
 // A depth pass's shader: it carries nothing and colours nothing, so the rasterizer only tests
 // and writes depth for it (doc/conventions.md#depth).
