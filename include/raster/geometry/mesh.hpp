@@ -39,6 +39,10 @@ struct Mesh {
     // Empty, or one per position, multiplying a linear material's diffuse colour
     // (doc/conventions.md#vertex-colours).
     std::vector<LinearRgb> colours{};
+    // Vertices drawn as round splats and pairs drawn as lines, beside the facets and over the
+    // same vertex arrays (doc/conventions.md#points-and-lines); empty for a surface alone.
+    std::vector<std::uint32_t> points{};
+    std::vector<std::array<std::uint32_t, 2>> segments{};
 };
 
 // The unit vector along v, or zero when v has no usable direction (zero, NaN, infinite).
