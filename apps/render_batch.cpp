@@ -33,7 +33,7 @@ std::vector<BatchJob> planned_jobs(const CLI::App& app, const RenderArguments& a
     if (app.count("output") > 0) {
         if (!looks_like_a_model(options.output)) {
             throw CLI::ValidationError("'" + raster::printable(options.output) +
-                                       "' is not a model (.obj, .gltf, .glb, .stl or .ply); "
+                                       "' is not a model (.obj, .gltf, .glb, .stl, .ply, .fbx, .dae, ...); "
                                        "with --output-dir, pictures are named after their models");
         }
         models.push_back(options.output);

@@ -3,6 +3,7 @@
 #include "option_checks.hpp"
 
 #include <raster/io/input_file.hpp>
+#include <raster/io/model_file.hpp>
 
 #include <cctype>
 #include <cmath>
@@ -75,11 +76,4 @@ std::optional<std::uint64_t> memory_size(const std::string& text) {
     return static_cast<std::uint64_t>(bytes);
 }
 
-bool looks_like_a_model(const std::string& name) {
-    std::string extension = std::filesystem::path(name).extension().string();
-    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    for (const char* known : {".obj", ".gltf", ".glb", ".stl", ".ply"}) {
-        if (extension == known) return true;
-    }
-    return false;
-}
+bool looks_like_a_model(const std::string& name) { return raster::has_model_ending(name); }

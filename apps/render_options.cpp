@@ -15,7 +15,7 @@
 
 std::string render_description() {
     return "Renders models (Wavefront OBJ with its MTL materials and textures, glTF 2.0 .gltf or .glb, "
-           "STL or PLY) to lossless WebP or PNG stills, or with --turntable to animations that turn them "
+           "STL, PLY, and the formats of the Open Asset Import Library: Collada, FBX, 3DS, OFF, 3MF, ...) to lossless WebP or PNG stills, or with --turntable to animations that turn them "
            "once. Framed automatically; points and directions are in each model's own coordinates. "
            "Several models at once need --output-dir.";
 }
@@ -35,7 +35,8 @@ void add_render_options(CLI::App& app, RenderArguments& arguments) {
                "  render vase.ply --turntable 90 --frames-dir frames   # frames/0000.png ...");
     app.add_option("model", arguments.model_path,
                    "The model: .obj (its MTL files are looked for beside it, their textures relative to them), "
-                   ".gltf (its buffers and images beside it), .glb, .stl or .ply")
+                   ".gltf (its buffers and images beside it), .glb, .stl, .ply, or one of " +
+                       raster::model_endings().substr(std::string_view(".obj, .gltf, .glb, .stl, .ply, ").size()))
         ->required()
         ->option_text("MODEL");
     add_export_options(app, options);

@@ -40,6 +40,26 @@ std::uint32_t bits_of(float value) {
     return bits;
 }
 
+// The file's unit normal at a corner, or zero when it has none or a broken one.
+glm::vec3 file_normal(const PolygonSoup& soup, const SoupCorner& corner) {
+    return corner.normal != kNoIndex ? unit_or_zero(soup.normals[static_cast<std::size_t>(corner.normal)])
+                                     : glm::vec3(0.0F);
+}
+
+// Appends the corner's position, `normal`, and its texture coordinate and colour when the mesh has them.
+void push_vertex(Mesh& mesh, const PolygonSoup& soup, const SoupCorner& corner, glm::vec3 normal, bool with_uvs,
+                 bool with_colours) {
+    mesh.positions.push_back(soup.positions[static_cast<std::size_t>(corner.position)]);
+    mesh.normals.push_back(normal);
+    if (with_uvs)
+        mesh.uvs.push_back(corner.uv != kNoIndex ? soup.uvs[static_cast<std::size_t>(corner.uv)] : glm::vec2(0.0F));
+    // A corner without a colour in a part with colours shows the material as it is.
+    if (with_colours) {
+        mesh.colours.push_back(corner.colour != kNoIndex ? soup.colours[static_cast<std::size_t>(corner.colour)]
+                                                         : LinearRgb{1.0F, 1.0F, 1.0F});
+    }
+}
+
 }  // namespace
 
 std::vector<std::pair<int, Mesh>> meshes_by_material(const PolygonSoup& soup, double crease_degrees) {
@@ -72,43 +92,50 @@ std::vector<std::pair<int, Mesh>> meshes_by_material(const PolygonSoup& soup, do
     std::map<int, Mesh> meshes;
     std::map<int, std::map<VertexKey, std::uint32_t>> vertices;
     std::map<int, bool> textured, coloured;
+    const auto note_corner = [&](const SoupCorner& corner, int material) {
+        if (corner.uv != kNoIndex) textured[material] = true;
+        if (corner.colour != kNoIndex) coloured[material] = true;
+    };
     for (const SoupTriangle& triangle : soup.triangles) {
-        for (const SoupCorner& corner : triangle.corners) {
-            if (corner.uv != kNoIndex) textured[triangle.material] = true;
-            if (corner.colour != kNoIndex) coloured[triangle.material] = true;
-        }
+        for (const SoupCorner& corner : triangle.corners) note_corner(corner, triangle.material);
     }
+    for (const SoupPoint& point : soup.points) note_corner(point.corner, point.material);
+    for (const SoupSegment& segment : soup.segments) {
+        for (const SoupCorner& end : segment.ends) note_corner(end, segment.material);
+    }
+    // A vertex of `material`'s mesh with `normal`: shared with any other corner that has all its attributes.
+    const auto vertex_of = [&](const SoupCorner& corner, glm::vec3 normal, int material) {
+        Mesh& mesh = meshes[material];
+        const VertexKey key{corner.position,   bits_of(normal.x), bits_of(normal.y),
+                            bits_of(normal.z), corner.uv,         corner.colour};
+        const auto [at, added] = vertices[material].try_emplace(key, static_cast<std::uint32_t>(mesh.positions.size()));
+        if (added) push_vertex(mesh, soup, corner, normal, textured[material], coloured[material]);
+        return at->second;
+    };
     for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
         if (unit[t] == glm::vec3(0.0F)) continue;  // no area: it could never cover a pixel
         const SoupTriangle& triangle = soup.triangles[t];
-        Mesh& mesh = meshes[triangle.material];
-        auto& index_of = vertices[triangle.material];
-        const bool with_uvs = textured[triangle.material], with_colours = coloured[triangle.material];
         Facet facet{{}, unit[t]};
         for (std::size_t k = 0; k < 3; ++k) {
             const SoupCorner& corner = triangle.corners[k];
             glm::vec3 normal(0.0F);  // the file's, unless it has none or a zero or broken one
             if (corner.normal != kNoIndex) normal = unit_or_zero(soup.normals[static_cast<std::size_t>(corner.normal)]);
             if (normal == glm::vec3(0.0F)) normal = generated_normal(t, corner.position);
-            const VertexKey key{corner.position,   bits_of(normal.x), bits_of(normal.y),
-                                bits_of(normal.z), corner.uv,         corner.colour};
-            const auto [at, added] = index_of.try_emplace(key, static_cast<std::uint32_t>(mesh.positions.size()));
-            if (added) {
-                mesh.positions.push_back(soup.positions[static_cast<std::size_t>(corner.position)]);
-                mesh.normals.push_back(normal);
-                if (with_uvs)
-                    mesh.uvs.push_back(corner.uv != kNoIndex ? soup.uvs[static_cast<std::size_t>(corner.uv)]
-                                                             : glm::vec2(0.0F));
-                // A corner without a colour in a part with colours shows the material as it is.
-                if (with_colours) {
-                    mesh.colours.push_back(corner.colour != kNoIndex
-                                               ? soup.colours[static_cast<std::size_t>(corner.colour)]
-                                               : LinearRgb{1.0F, 1.0F, 1.0F});
-                }
-            }
-            facet.corners[k] = at->second;
+            facet.corners[k] = vertex_of(corner, normal, triangle.material);
         }
-        mesh.facets.push_back(facet);
+        meshes[triangle.material].facets.push_back(facet);
+    }
+    // Every point is a vertex of its own: a cloud of millions would only slow a shared index down.
+    for (const SoupPoint& point : soup.points) {
+        Mesh& mesh = meshes[point.material];
+        mesh.points.push_back(static_cast<std::uint32_t>(mesh.positions.size()));
+        push_vertex(mesh, soup, point.corner, file_normal(soup, point.corner), textured[point.material],
+                    coloured[point.material]);
+    }
+    for (const SoupSegment& segment : soup.segments) {
+        const std::uint32_t a = vertex_of(segment.ends[0], file_normal(soup, segment.ends[0]), segment.material);
+        const std::uint32_t b = vertex_of(segment.ends[1], file_normal(soup, segment.ends[1]), segment.material);
+        meshes[segment.material].segments.push_back({a, b});
     }
     std::vector<std::pair<int, Mesh>> result;
     for (auto& [material, mesh] : meshes) result.emplace_back(material, std::move(mesh));

@@ -28,17 +28,30 @@ struct SoupTriangle {
     int material;
 };
 
+// A vertex drawn as a splat, and two drawn as a line (doc/conventions.md#points-and-lines).
+struct SoupPoint {
+    SoupCorner corner;
+    int material;
+};
+struct SoupSegment {
+    std::array<SoupCorner, 2> ends;
+    int material;
+};
+
 struct PolygonSoup {
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;
     std::vector<glm::vec2> uvs;
     std::vector<LinearRgb> colours;  // in linear light
     std::vector<SoupTriangle> triangles;
+    std::vector<SoupPoint> points{};
+    std::vector<SoupSegment> segments{};
 };
 
 // One mesh per material the triangles use, in order of material. Each corner without a usable normal
 // takes the area-weighted mean of the facet normals around its position that lie within
 // `crease_degrees` of its own facet's (0: every facet flat). Triangles with no area are dropped.
+// Points and segments keep the file's normal, or none (zero): they are drawn in their colour.
 [[nodiscard]] std::vector<std::pair<int, Mesh>> meshes_by_material(const PolygonSoup& soup, double crease_degrees);
 
 }  // namespace raster::detail

@@ -1,6 +1,7 @@
 #include <raster/io/model_file.hpp>
 
 #include "io/model_format.hpp"
+#include "io/model_formats.hpp"
 #include "io/model_reading.hpp"
 #include "io/reader_process.hpp"
 
@@ -14,7 +15,7 @@
 namespace raster {
 namespace detail {
 
-std::string reader_name(const std::filesystem::path& path) { return format_name(model_format_of(path)); }
+std::string reader_name(const std::filesystem::path& path) { return format_name(model_format_of(path), path); }
 
 Model read_model_here(const std::filesystem::path& path, const ObjOptions& options) {
     const ModelFormat format = model_format_of(path);
@@ -33,12 +34,20 @@ Model read_model_here(const std::filesystem::path& path, const ObjOptions& optio
     } catch (const std::runtime_error& problem) {
         throw std::runtime_error(name + ": " + problem.what());
     }
-    if (const std::string problem = content_problem(format, head, size); !problem.empty())
+    if (const std::string problem = content_problem(format, head, size, path); !problem.empty())
         throw std::runtime_error(name + ": " + problem);
     return format == ModelFormat::obj ? read_obj(path, options) : read_scene_file(path, options);
 }
 
 }  // namespace detail
+
+std::string model_endings() { return std::string(detail::kModelEndings); }
+
+bool has_model_ending(const std::filesystem::path& path) {
+    const std::string ending = detail::ending_of(path);
+    return ending == ".obj" || ending == ".gltf" || ending == ".glb" || ending == ".stl" || ending == ".ply" ||
+           detail::other_format(ending) != nullptr;
+}
 
 Model read_model(const std::filesystem::path& path, const ObjOptions& options) {
     const std::string reader = detail::reader_name(path);  // an unknown ending is refused here, before any fork

@@ -1,5 +1,7 @@
 #include "io/model_format.hpp"
 
+#include "io/model_formats.hpp"
+
 #include <raster/io/input_file.hpp>
 
 #include <algorithm>
@@ -76,37 +78,57 @@ std::string what_it_looks_like(std::span<const std::uint8_t> head, std::uintmax_
 
 }  // namespace
 
+std::string a_model(const std::string& name) {
+    if (name.empty()) return "a model";
+    const bool acronym = name.size() > 1 && (std::isupper(static_cast<unsigned char>(name[1])) != 0 ||
+                                             std::isdigit(static_cast<unsigned char>(name[1])) != 0);
+    const bool vowel = std::string_view(acronym ? "AEFHILMNORSX" : "AEIOU").find(name[0]) != std::string_view::npos;
+    return (vowel ? "an " : "a ") + name + " model";
+}
+
 ModelFormat model_format_of(const std::filesystem::path& path) {
-    std::string ending = path.extension().string();
-    std::transform(ending.begin(), ending.end(), ending.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const std::string ending = ending_of(path);
     if (ending == ".obj") return ModelFormat::obj;
     if (ending == ".gltf") return ModelFormat::gltf;
     if (ending == ".glb") return ModelFormat::glb;
     if (ending == ".stl") return ModelFormat::stl;
     if (ending == ".ply") return ModelFormat::ply;
-    throw std::runtime_error(printable(path.string()) +
-                             ": raster reads models ending in .obj, .gltf, .glb, .stl or .ply");
+    const std::string name = printable(path.string());
+    if (const OtherFormat* other = other_format(ending)) {
+        if (!assimp_claims(ending)) {
+            throw std::runtime_error(name + ": " + a_model(std::string(other->name)) +
+                                     ", but the Open Asset Import Library raster is linked with has no reader for it");
+        }
+        return ModelFormat::other;
+    }
+    if (const std::string why = unreadable_format(ending); !why.empty()) throw std::runtime_error(name + ": " + why);
+    throw std::runtime_error(name + ": raster reads models ending in " + std::string(kModelEndings));
 }
 
-std::string format_name(ModelFormat format) {
+std::string ending_of(const std::filesystem::path& path) {
+    std::string ending = path.extension().string();
+    std::transform(ending.begin(), ending.end(), ending.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ending;
+}
+
+std::string format_name(ModelFormat format, const std::filesystem::path& path) {
     switch (format) {
     case ModelFormat::obj: return "OBJ";
     case ModelFormat::gltf: return "glTF";
     case ModelFormat::glb: return "glTF binary";
     case ModelFormat::stl: return "STL";
     case ModelFormat::ply: return "PLY";
+    case ModelFormat::other: {
+        const OtherFormat* other = other_format(ending_of(path));
+        return other != nullptr ? std::string(other->name) : "model";
+    }
     }
     return "model";
 }
 
-// "a glTF model", "an STL model": the article as the name is said.
-std::string a_model(ModelFormat format) {
-    const bool vowel = format == ModelFormat::obj || format == ModelFormat::stl;
-    return (vowel ? "an " : "a ") + format_name(format) + " model";
-}
-
-std::string content_problem(ModelFormat format, std::span<const std::uint8_t> head, std::uintmax_t file_size) {
+std::string content_problem(ModelFormat format, std::span<const std::uint8_t> head, std::uintmax_t file_size,
+                            const std::filesystem::path& path) {
     const std::string_view text = trimmed(text_of(head));
     bool fits = false;
     switch (format) {
@@ -115,14 +137,16 @@ std::string content_problem(ModelFormat format, std::span<const std::uint8_t> he
     case ModelFormat::ply: fits = text_of(head).starts_with("ply\n") || text_of(head).starts_with("ply\r\n"); break;
     case ModelFormat::stl: fits = binary_stl(head, file_size) || starts_without_case(text, "solid"); break;
     case ModelFormat::obj: fits = what_it_looks_like(head, file_size).empty(); break;
+    case ModelFormat::other: fits = looks_like_its_ending(what_it_looks_like(head, file_size), ending_of(path)); break;
     }
     if (fits) return "";
-    if (file_size == 0) return "is empty, not " + a_model(format);
+    const std::string a_format = a_model(format_name(format, path));
+    if (file_size == 0) return "is empty, not " + a_format;
     const std::string looks = what_it_looks_like(head, file_size);
     if (format == ModelFormat::stl && (looks.empty() || looks == "binary data")) {
         return "is not an STL model: not 'solid' text, and its triangle count does not match its size as a binary STL's must";
     }
-    return looks.empty() ? "is not " + a_model(format) : "looks like " + looks + ", not " + a_model(format);
+    return looks.empty() ? "is not " + a_format : "looks like " + looks + ", not " + a_format;
 }
 
 }  // namespace raster::detail

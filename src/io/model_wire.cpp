@@ -22,6 +22,8 @@ void write_mesh(WireWriter& out, const Mesh& mesh) {
     out.value(static_cast<std::uint8_t>(mesh.convex));
     out.array(mesh.uvs);
     out.array(mesh.colours);
+    out.array(mesh.points);
+    out.array(mesh.segments);
 }
 
 Mesh read_mesh(WireReader& in) {
@@ -35,6 +37,8 @@ Mesh read_mesh(WireReader& in) {
     mesh.convex = in.value<std::uint8_t>() != 0;
     mesh.uvs = in.array<glm::vec2>();
     mesh.colours = in.array<LinearRgb>();
+    mesh.points = in.array<std::uint32_t>();
+    mesh.segments = in.array<std::array<std::uint32_t, 2>>();
     const std::size_t n = mesh.positions.size();
     if ((!mesh.normals.empty() && mesh.normals.size() != n) || (!mesh.uvs.empty() && mesh.uvs.size() != n) ||
         (!mesh.colours.empty() && mesh.colours.size() != n)) {
@@ -44,6 +48,12 @@ Mesh read_mesh(WireReader& in) {
         for (const std::uint32_t corner : facet.corners) {
             if (corner >= n) WireReader::broken();
         }
+    }
+    for (const std::uint32_t point : mesh.points) {
+        if (point >= n) WireReader::broken();
+    }
+    for (const auto& segment : mesh.segments) {
+        if (segment[0] >= n || segment[1] >= n) WireReader::broken();
     }
     return mesh;
 }
@@ -57,7 +67,8 @@ std::size_t model_wire_size(const Model& model) noexcept {
         const Mesh& m = part.mesh;
         size += 256 + part.material_name.size() + m.positions.size() * sizeof(glm::vec3) +
                 m.normals.size() * sizeof(glm::vec3) + m.facets.size() * sizeof(Facet) +
-                m.uvs.size() * sizeof(glm::vec2) + m.colours.size() * sizeof(LinearRgb);
+                m.uvs.size() * sizeof(glm::vec2) + m.colours.size() * sizeof(LinearRgb) +
+                m.points.size() * sizeof(std::uint32_t) + m.segments.size() * sizeof(m.segments[0]);
         if (part.texture && counted.emplace(part.texture.get(), true).second)
             size += 64 + part.texture->level(0).bytes().size() * 4 / 3 + 64 * part.texture->level_count();
     }

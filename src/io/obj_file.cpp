@@ -126,14 +126,22 @@ private:
     std::vector<InputRecord> sources_;
 };
 
-// Checks one index of a face corner against the count of what it names.
-std::int64_t checked(int index, std::size_t count, const char* what, std::size_t face, bool optional) {
+// Checks one index of a face corner, point or line vertex against the count of what it names.
+std::int64_t checked(int index, std::size_t count, const char* what, const char* statement, std::size_t number,
+                     bool optional) {
     if (index < 0 && optional) return detail::kNoIndex;
     if (index < 0 || static_cast<std::size_t>(index) >= count) {
-        throw BadModel("face " + std::to_string(face + 1) + " names " + what + " " + std::to_string(index + 1) +
-                       ", but the file has " + std::to_string(count));
+        throw BadModel(std::string(statement) + " " + std::to_string(number) + " names " + what + " " +
+                       std::to_string(index + 1) + ", but the file has " + std::to_string(count));
     }
     return index;
+}
+
+// An OBJ colour channel (sRGB, as MeshLab and others write it) in linear light, clamped to
+// [0, 1], white where it is not a number (doc/conventions.md#vertex-colours).
+float linear_obj_channel(tinyobj::real_t written) {
+    const float c = std::isfinite(written) ? std::clamp(static_cast<float>(written), 0.0F, 1.0F) : 1.0F;
+    return static_cast<float>(linear_from_srgb_channel(c));
 }
 
 // Positions and normals mirrored into raster's left-handed world; each face split into exactly
@@ -149,6 +157,28 @@ detail::PolygonSoup soup_from(const tinyobj::attrib_t& attrib, const std::vector
     }
     for (std::size_t i = 0; i + 1 < attrib.texcoords.size(); i += 2)
         soup.uvs.emplace_back(attrib.texcoords[i], attrib.texcoords[i + 1]);
+    // tinyobjloader keeps colours only when every v gives them (doc/conventions.md#vertex-colours).
+    const bool coloured = attrib.colors.size() == attrib.vertices.size();
+    if (coloured) {
+        for (std::size_t i = 0; i + 2 < attrib.colors.size(); i += 3) {
+            soup.colours.push_back({linear_obj_channel(attrib.colors[i]), linear_obj_channel(attrib.colors[i + 1]),
+                                    linear_obj_channel(attrib.colors[i + 2])});
+        }
+    }
+    std::size_t point = 0, line = 0;
+    const auto corner_of = [&](const tinyobj::index_t& index, const char* statement, std::size_t number) {
+        const detail::SoupCorner corner{
+            checked(index.vertex_index, soup.positions.size(), "vertex", statement, number, false),
+            checked(index.normal_index, soup.normals.size(), "normal", statement, number, true),
+            checked(index.texcoord_index, soup.uvs.size(), "texture coordinate", statement, number, true),
+            coloured ? checked(index.vertex_index, soup.colours.size(), "colour", statement, number, false)
+                     : detail::kNoIndex};
+        const glm::vec3& p = soup.positions[static_cast<std::size_t>(corner.position)];
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {  // the survey refuses these first
+            throw BadModel("vertex " + std::to_string(corner.position + 1) + " is not a finite point");
+        }
+        return corner;
+    };
     std::size_t face = 0;
     auto large = survey.large_faces.begin();
     std::vector<detail::SoupCorner> corners;
@@ -169,18 +199,8 @@ detail::PolygonSoup soup_from(const tinyobj::attrib_t& attrib, const std::vector
             corners.clear();
             outline.clear();
             for (std::size_t k = first; k < next; ++k) {
-                const tinyobj::index_t& index = shape.mesh.indices[k];
-                const detail::SoupCorner corner{
-                    checked(index.vertex_index, soup.positions.size(), "vertex", face, false),
-                    checked(index.normal_index, soup.normals.size(), "normal", face, true),
-                    checked(index.texcoord_index, soup.uvs.size(), "texture coordinate", face, true)};
-                const glm::vec3& p = soup.positions[static_cast<std::size_t>(corner.position)];
-                if (!std::isfinite(p.x) || !std::isfinite(p.y) ||
-                    !std::isfinite(p.z)) {  // the survey refuses these first
-                    throw BadModel("vertex " + std::to_string(corner.position + 1) + " is not a finite point");
-                }
-                corners.push_back(corner);
-                outline.emplace_back(p);
+                corners.push_back(corner_of(shape.mesh.indices[k], "face", face + 1));
+                outline.emplace_back(soup.positions[static_cast<std::size_t>(corners.back().position)]);
             }
             const int material = f < shape.mesh.material_ids.size() ? shape.mesh.material_ids[f] : -1;
             // Each piece turned from OBJ's counter-clockwise to raster's clockwise order.
@@ -189,6 +209,33 @@ detail::PolygonSoup soup_from(const tinyobj::attrib_t& attrib, const std::vector
             }
         }
         if (next != shape.mesh.indices.size()) throw BadModel("its faces and their corners do not line up");
+        // OBJ gives points and lines no material: they take the default (doc/conventions.md#points-and-lines).
+        for (const tinyobj::index_t& index : shape.points.indices)
+            soup.points.push_back({corner_of(index, "point", ++point), -1});
+        std::size_t at = 0;
+        for (const int count : shape.lines.num_line_vertices) {
+            ++line;
+            if (count < 0 || static_cast<std::size_t>(count) > shape.lines.indices.size() - at)
+                throw BadModel("line " + std::to_string(line) + " is cut short");
+            for (std::size_t k = at; k + 1 < at + static_cast<std::size_t>(count); ++k) {
+                soup.segments.push_back({{corner_of(shape.lines.indices[k], "line", line),
+                                          corner_of(shape.lines.indices[k + 1], "line", line)},
+                                         -1});
+            }
+            at += static_cast<std::size_t>(count);
+        }
+    }
+    if (survey.faces == 0 && survey.skipped_faces == 0 && survey.points == 0 && survey.segments == 0 &&
+        survey.short_line == 0) {
+        // Vertices alone are a point cloud, as MeshLab writes one; the n-th normal is the n-th vertex's.
+        const bool paired = soup.normals.size() == soup.positions.size();
+        for (std::size_t v = 0; v < soup.positions.size(); ++v) {
+            const glm::vec3& p = soup.positions[v];
+            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) continue;  // the survey warned
+            const auto at = static_cast<std::int64_t>(v);
+            soup.points.push_back(
+                {{at, paired ? at : detail::kNoIndex, detail::kNoIndex, coloured ? at : detail::kNoIndex}, -1});
+        }
     }
     return soup;
 }
@@ -282,6 +329,11 @@ Model model_from(std::istream& obj, const std::string& name, const detail::ObjSu
     skipped = std::max(skipped, dropped_again);
     if (skipped > 0)
         model.warnings.push_back(name + ": skipped " + std::to_string(skipped) + " faces with fewer than 3 corners");
+    if (survey.coloured_vertices > 0 && soup.colours.empty()) {
+        model.warnings.push_back(name + ": " + std::to_string(survey.coloured_vertices) + " of " +
+                                 std::to_string(survey.defined[0]) +
+                                 " vertices give a colour, and OBJ's colours are all or none; drawing none");
+    }
     std::map<std::filesystem::path, std::shared_ptr<const Texture>> loaded;  // by canonical path: each file read once
     std::size_t texels = 0;
     bool translucent = false;
@@ -352,7 +404,7 @@ Model model_from(std::istream& obj, const std::string& name, const detail::ObjSu
         }
         throw BadModel(std::string("every face has no area") + hint);
     }
-    if (model.parts.empty()) throw BadModel("no faces to draw");
+    if (model.parts.empty()) throw BadModel(kNothingToDraw);
     return model;
 }
 

@@ -69,7 +69,8 @@ std::string number_problem(std::string_view word) {
 
 // One index of a face corner, OBJ's way: 1 is the first defined so far, -1 the last one.
 // Returns the index from 0, or throws with the reason.
-std::size_t resolved_index(std::string_view text, std::size_t defined, Kind kind, const std::string& at) {
+std::size_t resolved_index(std::string_view text, std::size_t defined, Kind kind, const std::string& at,
+                           std::string_view statement) {
     const std::string what = kKindName[kind];
     long long value = 0;
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
@@ -79,8 +80,9 @@ std::size_t resolved_index(std::string_view text, std::size_t defined, Kind kind
     if (value == 0) throw std::runtime_error(at + what + " index 0: OBJ counts from 1");
     const long long resolved = value > 0 ? value : static_cast<long long>(defined) + value + 1;
     if (resolved < 1 || resolved > static_cast<long long>(defined)) {
-        throw std::runtime_error(at + "face names " + what + " " + std::to_string(value) + ", but " +
-                                 std::to_string(defined) + (defined == 1 ? " is" : " are") + " defined before it");
+        throw std::runtime_error(at + std::string(statement) + " names " + what + " " + std::to_string(value) +
+                                 ", but " + std::to_string(defined) + (defined == 1 ? " is" : " are") +
+                                 " defined before it");
     }
     return static_cast<std::size_t>(resolved - 1);
 }
@@ -101,13 +103,14 @@ ObjSurvey survey_obj(const std::string& name, std::size_t max_corners,
     ObjSurvey survey;
     std::array<std::vector<BadNumber>, 3> bad;
     std::size_t empty_mtllib_line = 0, empty_mtllib_count = 0;
-    const auto check_used = [&](Kind kind, std::size_t index, const std::string& at) {
+    const auto check_used = [&](Kind kind, std::size_t index, const std::string& at, std::string_view statement) {
         auto& list = bad[kind];
         const auto found = std::lower_bound(list.begin(), list.end(), index,
                                             [](const BadNumber& b, std::size_t i) { return b.index < i; });
         if (found == list.end() || found->index != index) return;
-        throw std::runtime_error(at + "the face uses " + kKindName[kind] + " " + std::to_string(index + 1) +
-                                 ", but line " + std::to_string(found->line) + " gives it " + found->problem);
+        throw std::runtime_error(at + "the " + std::string(statement) + " uses " + kKindName[kind] + " " +
+                                 std::to_string(index + 1) + ", but line " + std::to_string(found->line) +
+                                 " gives it " + found->problem);
     };
     lines([&](std::string_view line, std::size_t number) {
         if (number == 1 && line.starts_with("\xEF\xBB\xBF")) line.remove_prefix(3);  // a UTF-8 byte order mark
@@ -116,7 +119,8 @@ ObjSurvey survey_obj(const std::string& name, std::size_t max_corners,
                           : keyword == "vt" ? kUv
                           : keyword == "vn" ? kNormal
                                             : std::size_t{3};
-        if (keyword.empty() || (kind == 3 && keyword != "f" && keyword != "mtllib" && keyword != "usemtl")) return;
+        const bool drawn = keyword == "f" || keyword == "p" || keyword == "l";
+        if (keyword.empty() || (kind == 3 && !drawn && keyword != "mtllib" && keyword != "usemtl")) return;
         const std::vector<std::string_view> words = words_of(line);
         const std::string at = name + ":" + std::to_string(number) + ": ";
         if (kind < 3) {
@@ -128,14 +132,20 @@ ObjSurvey survey_obj(const std::string& name, std::size_t max_corners,
                           std::to_string(kNeededNumbers[kind]) + " coordinates";
             }
             if (!problem.empty()) bad[kind].push_back({survey.defined[kind], number, std::move(problem)});
+            if (kind == kPosition && words.size() - 1 >= 6) ++survey.coloured_vertices;
             ++survey.defined[kind];
-        } else if (keyword == "f") {
-            if (words.size() - 1 > max_corners) {
+        } else if (drawn) {
+            const bool face = keyword == "f";
+            const std::string_view statement = face ? "face" : keyword == "p" ? "point" : "line";
+            if (face && words.size() - 1 > max_corners) {
                 throw std::runtime_error(at + "a face of more than " + std::to_string(max_corners) + " corners");
             }
-            if (words.size() < 4) ++survey.skipped_faces;
-            if (words.size() - 1 >= 256) survey.large_faces.emplace_back(survey.faces, words.size() - 1);
-            if (words.size() >= 4) ++survey.faces;
+            if (face && words.size() < 4) ++survey.skipped_faces;
+            if (face && words.size() - 1 >= 256) survey.large_faces.emplace_back(survey.faces, words.size() - 1);
+            if (face && words.size() >= 4) ++survey.faces;
+            if (keyword == "p") survey.points += words.size() - 1;
+            if (keyword == "l" && words.size() >= 3) survey.segments += words.size() - 2;
+            if (keyword == "l" && words.size() < 3 && survey.short_line == 0) survey.short_line = number;
             for (std::size_t w = 1; w < words.size(); ++w) {
                 const std::string_view corner = words[w];
                 std::array<std::string_view, 3> fields{};
@@ -150,13 +160,14 @@ ObjSurvey survey_obj(const std::string& name, std::size_t max_corners,
                 const bool well_formed = count < 3 && !fields[0].empty() && (count != 1 || !fields[1].empty()) &&
                                          (count != 2 || !fields[2].empty());
                 if (!well_formed) {
-                    throw std::runtime_error(at + "corner '" + printable(corner, 40) +
+                    throw std::runtime_error(at + (face ? "corner '" : "vertex '") + printable(corner, 40) +
                                              "' is not of the form v, v/vt, v/vt/vn or v//vn");
                 }
                 for (std::size_t k = 0; k <= count; ++k) {
                     if (fields[k].empty()) continue;  // v//vn
                     const auto field_kind = static_cast<Kind>(k);
-                    check_used(field_kind, resolved_index(fields[k], survey.defined[k], field_kind, at), at);
+                    check_used(field_kind, resolved_index(fields[k], survey.defined[k], field_kind, at, statement), at,
+                               statement);
                 }
             }
         } else if (keyword == "mtllib") {
@@ -172,6 +183,9 @@ ObjSurvey survey_obj(const std::string& name, std::size_t max_corners,
                                        ? " (nor do " + std::to_string(empty_mtllib_count - 1) + " more mtllib lines)"
                                        : ""));
     }
+    if (survey.short_line != 0)
+        survey.warnings.push_back(name + ":" + std::to_string(survey.short_line) +
+                                  ": a line (l) of fewer than 2 vertices draws nothing; skipped");
     // One warning per kind, however many lines repeat its cause.
     for (std::size_t kind = 0; kind < 3; ++kind) {
         if (bad[kind].empty()) continue;  // a face using one would have thrown

@@ -30,12 +30,17 @@ struct ObjSurvey {
     // Faces of 256 corners or more, as (index among faces of 3 or more, corners): tinyobjloader
     // keeps a face's corner count in one byte, so these are the counts it gets wrong.
     std::vector<std::pair<std::size_t, std::size_t>> large_faces;
-    std::size_t faces = 0;  // of 3 corners or more
+    std::size_t faces = 0;              // of 3 corners or more
+    std::size_t points = 0;             // vertices named by p statements
+    std::size_t segments = 0;           // pairs of vertices one after the other in l statements
+    std::size_t short_line = 0;         // the first l line of fewer than 2 vertices, or 0
+    std::size_t coloured_vertices = 0;  // v statements giving a colour after x y z
 };
 
 // Checks one OBJ text line by line (`lines` calls its visitor with each line and its number):
-// faces must name, by v, v/vt, v/vt/vn or v//vn, only finite coordinates defined before them,
-// with at most `max_corners` corners. Throws std::runtime_error "NAME:LINE: ..." otherwise.
+// faces, points (p) and lines (l) must name, by v, v/vt, v/vt/vn or v//vn, only finite
+// coordinates defined before them; faces have at most `max_corners` corners. Throws std::runtime_error "NAME:LINE: ..."
+// otherwise.
 [[nodiscard]] ObjSurvey survey_obj(
     const std::string& name, std::size_t max_corners,
     const std::function<void(const std::function<void(std::string_view, std::size_t)>&)>& lines);

@@ -44,17 +44,38 @@ std::uint64_t list_length(const std::uint8_t* at, const PlyProperty& property, b
     return negative ? UINT64_MAX : raw;
 }
 
-std::string binary_problem(const std::vector<PlyElement>& elements, std::span<const std::uint8_t> body,
-                           bool big_endian) {
+// The fewest bytes one element can take: its fixed properties and its lists' lengths in binary,
+// a digit and a space for each property in ASCII; at least one, so that no count is free.
+std::uint64_t least_bytes(const PlyElement& element, bool ascii) {
+    std::uint64_t bytes = 0;
+    for (const PlyProperty& property : element.properties)
+        bytes += ascii ? 2U : static_cast<std::uint64_t>(property.list ? property.count_bytes : property.item_bytes);
+    return std::max<std::uint64_t>(bytes, 1);
+}
+
+std::string too_many(const PlyElement& element, std::size_t left, bool ascii) {
+    if (element.count <= left / least_bytes(element, ascii)) return "";
+    return declares(element) + ", more than the " + std::to_string(left) + " bytes left";
+}
+
+std::string cut_short(const PlyElement& element, std::uint64_t item) {
+    return "the PLY data is cut short: its header declares " + std::to_string(element.count) + " '" +
+           std::string(element.name) + "' elements and the data ends in element " + std::to_string(item + 1);
+}
+
+std::string binary_problem(const std::vector<PlyElement>& elements, std::span<const std::uint8_t> body, bool big_endian,
+                           std::string& shortfall) {
     std::size_t at = 0;
     for (const PlyElement& element : elements) {
-        if (element.count > body.size() - at)
-            return declares(element) + ", more than the " + std::to_string(body.size() - at) + " bytes left";
+        if (std::string problem = too_many(element, body.size() - at, false); !problem.empty()) return problem;
         for (std::uint64_t i = 0; i < element.count; ++i) {
             for (const PlyProperty& property : element.properties) {
                 std::uint64_t need =
                     static_cast<std::uint64_t>(property.list ? property.count_bytes : property.item_bytes);
-                if (need > body.size() - at) return "";  // cut short: the reader keeps what is there
+                if (need > body.size() - at) {  // the reader keeps what is there
+                    shortfall = cut_short(element, i);
+                    return "";
+                }
                 if (property.list) {
                     const std::uint64_t length = list_length(body.data() + at, property, big_endian);
                     at += need;
@@ -73,13 +94,15 @@ std::string binary_problem(const std::vector<PlyElement>& elements, std::span<co
     return "";
 }
 
-std::string ascii_problem(const std::vector<PlyElement>& elements, std::string_view body) {
+std::string ascii_problem(const std::vector<PlyElement>& elements, std::string_view body, std::string& shortfall) {
     std::size_t at = 0;
     for (const PlyElement& element : elements) {
-        if (element.count > body.size() - at)
-            return declares(element) + ", more than the " + std::to_string(body.size() - at) + " bytes left";
+        if (std::string problem = too_many(element, body.size() - at, true); !problem.empty()) return problem;
         for (std::uint64_t i = 0; i < element.count; ++i) {
-            if (at >= body.size()) return "";  // cut short: the reader keeps what is there
+            if (at >= body.size()) {  // the reader keeps what is there
+                shortfall = cut_short(element, i);
+                return "";
+            }
             const std::size_t end = std::min(body.find('\n', at), body.size());
             const std::vector<std::string_view> words = ply_words(body.substr(at, end - at));
             at = end + 1;
@@ -106,7 +129,9 @@ std::string ascii_problem(const std::vector<PlyElement>& elements, std::string_v
 
 }  // namespace
 
-std::string ply_counts_problem(std::span<const std::uint8_t> bytes) {
+std::string ply_counts_problem(std::span<const std::uint8_t> bytes, PlyShape* shape) {
+    PlyShape ignored;
+    PlyShape& out = shape != nullptr ? *shape : ignored;
     const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
     std::vector<PlyElement> elements;
     std::string_view format;
@@ -136,9 +161,14 @@ std::string ply_counts_problem(std::span<const std::uint8_t> bytes) {
             }
         }
     }
+    out.vertices = 0;
+    for (const PlyElement& element : elements) {
+        if (element.name == "vertex") out.vertices += element.count;
+    }
     const auto body = bytes.subspan(start);
-    if (format == "ascii") return ascii_problem(elements, {reinterpret_cast<const char*>(body.data()), body.size()});
-    return binary_problem(elements, body, format == "binary_big_endian");
+    if (format == "ascii")
+        return ascii_problem(elements, {reinterpret_cast<const char*>(body.data()), body.size()}, out.cut_short);
+    return binary_problem(elements, body, format == "binary_big_endian", out.cut_short);
 }
 
 }  // namespace raster::detail

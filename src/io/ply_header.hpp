@@ -21,11 +21,17 @@ inline constexpr std::size_t kMaxPlyHeaderBytes = 64 * 1024;
 // The words of one header line, split at spaces and tabs.
 [[nodiscard]] std::vector<std::string_view> ply_words(std::string_view line);
 
-// "" when no element count is larger than the bytes after the header and no list is longer than
-// the bytes after its length (a binary body walked byte by byte, an ASCII one line by line);
-// else the first that is, before a reader allocates what a few hundred bytes claim. A body
-// that is merely cut short passes: the reader keeps what is there. Call after
-// ply_header_problem passed.
-[[nodiscard]] std::string ply_counts_problem(std::span<const std::uint8_t> bytes);
+// What a PLY's body holds, for messages when the reader finds nothing in it.
+struct PlyShape {
+    std::uint64_t vertices = 0;  // as the header declares
+    std::string cut_short;       // "the PLY data is cut short: ..." when the body ends before the elements do, else ""
+};
+
+// "" when no element count is more than the bytes after the header can hold (every property at
+// its smallest) and no list is longer than the bytes after its length (a binary body walked
+// byte by byte, an ASCII one line by line); else the first that is, before a reader allocates
+// what a few hundred bytes claim. A body that is merely cut short passes (the reader keeps what
+// is there) and is noted in `shape`. Call after ply_header_problem passed.
+[[nodiscard]] std::string ply_counts_problem(std::span<const std::uint8_t> bytes, PlyShape* shape = nullptr);
 
 }  // namespace raster::detail

@@ -104,7 +104,7 @@ TEST(RenderApp, BadModelsAndOptionsFailWithOneLine) {
         {{"ok.obj", "--near", "5", "--far", "1"}, "render: --near must be less than --far, got 5 and 1\n"},
         {{"ok.obj", "--ortho", "--near", "1"},
          "render: --near and --far set a perspective lens; an orthographic view draws the whole model\n"},
-        {{"empty.obj"}, "render: empty.obj: no faces to draw\n"},
+        {{"empty.obj"}, "render: empty.obj: nothing to draw: no faces, points or lines\n"},
         {{"folder.obj"}, "render: folder.obj: is a directory, not a file\n"},
         {{"ok.obj", "--texture", "nowhere.png"}, "render: nowhere.png: does not exist\n"},
         {{"ok.obj", "--eye", "0,5,0"}, "render: the view runs along the up direction; give another --up or --eye\n"},

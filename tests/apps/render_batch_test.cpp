@@ -72,7 +72,7 @@ TEST(RenderBatch, ABadModelIsOneLineTheOthersAreStillWrittenAndTheExitSaysSo) {
                              "png", "--width", "20", "--height", "20"},
                             dir.path());
     EXPECT_EQ(result.exit_code, 1);
-    EXPECT_EQ(result.err, "render: empty.obj: no faces to draw\n"
+    EXPECT_EQ(result.err, "render: empty.obj: nothing to draw: no faces, points or lines\n"
                           "render: missing.glb: does not exist\n"
                           "render: wrote 2 of 4 models into thumbs in " +
                               result.err.substr(result.err.rfind(" in ") + 4));

@@ -209,8 +209,7 @@ TEST(HostileModels, EmptyFilesAreRefusedWithoutANullPointerReachingAssimp) {
     const std::string gltf =
         "{" + kAsset +
         R"(, "buffers": [{"byteLength": 0, "uri": "empty.bin"}], "scenes": [{"nodes": [0]}], "nodes": [{}]})";
-    EXPECT_EQ(refusal(dir, "empty-buffer.gltf", gltf),
-              "not a glTF 2.0, STL or PLY model raster can read (or one it finds broken)");
+    EXPECT_EQ(refusal(dir, "empty-buffer.gltf", gltf), "not a glTF 2.0 model raster can read (or one it finds broken)");
     EXPECT_EQ(refusal(dir, "empty.stl", ""), "is empty, not an STL model");
     EXPECT_EQ(refusal(dir, "empty.ply", ""), "is empty, not a PLY model");
 }

@@ -111,8 +111,8 @@ TEST(ObjFile, BadIndicesAndPointsAreOneLineErrors) {
     EXPECT_EQ(
         error_of("v 0 0 0\nv 1 0 0\nv 0 -1e39 0\nf 1 2 3\n"),
         "<memory>:4: the face uses vertex 3, but line 3 gives it '-1e39', which is beyond the largest coordinate raster stores");
-    EXPECT_EQ(error_of(""), "<memory>: no faces to draw");
-    EXPECT_EQ(error_of(triangle), "<memory>: no faces to draw");
+    EXPECT_EQ(error_of(""), "<memory>: nothing to draw: no faces, points or lines");
+    EXPECT_EQ(error_of(triangle), "");  // vertices alone are a point cloud
     EXPECT_EQ(error_of("v 0 0 0\nv 0 0 0\nv 0 0 0\nf 1 2 3\n"), "<memory>: every face has no area");
 }
 
@@ -149,15 +149,15 @@ TEST(ObjFile, MalformedTextIsRefusedInOneLineSayingWhere) {
     const std::pair<std::string, std::string> cases[] = {
         {"v 1 abc 3\nf 1 1 1\n",
          "<memory>:2: the face uses vertex 1, but line 1 gives it 'abc', which is not a number"},
-        {"f\n", "<memory>: no faces to draw"},
+        {"f\n", "<memory>: nothing to draw: no faces, points or lines"},
         {"f / / /\n", "<memory>:1: corner '/' is not of the form v, v/vt, v/vt/vn or v//vn"},
         {"v\nv\nv\nf 1 2 3\n", "<memory>:4: face names vertex 1, but 0 are defined before it"},
-        {"vt 1e999 -1e999\n", "<memory>: no faces to draw"},
-        {"usemtl\nmtllib\n", "<memory>: no faces to draw"},
+        {"vt 1e999 -1e999\n", "<memory>: nothing to draw: no faces, points or lines"},
+        {"usemtl\nmtllib\n", "<memory>: nothing to draw: no faces, points or lines"},
         {"f 0 0 0\n", "<memory>:1: vertex index 0: OBJ counts from 1"},
         {"v 1 2 3\nf -1 -1 -1\n", "<memory>: every face has no area"},
         {"f 2147483647 -2147483648 1\n", "<memory>:1: face names vertex 2147483647, but 0 are defined before it"},
-        {std::string("\x00\xff\xfe garbage\n", 12), "<memory>: no faces to draw"},
+        {std::string("\x00\xff\xfe garbage\n", 12), "<memory>: nothing to draw: no faces, points or lines"},
     };
     for (const auto& [text, message] : cases)
         EXPECT_EQ(error_of(text, "newmtl\nKd x y z\nNs nan\nmap_Kd\n"), message) << raster::printable(text);

@@ -30,10 +30,16 @@ struct Model {
     std::vector<InputRecord> sources;
 };
 
+// Why a model with no faces, points or lines is refused, in every reader's words.
+inline constexpr const char* kNothingToDraw = "nothing to draw: no faces, points or lines";
+
 // The material of a model file without one: a light grey, no highlight (Blender's default diffuse).
 [[nodiscard]] LinearMaterial default_model_material() noexcept;
 
 [[nodiscard]] std::size_t triangle_count(const Model& model) noexcept;
+// Vertices drawn as points, and lines, over every part.
+[[nodiscard]] std::size_t point_count(const Model& model) noexcept;
+[[nodiscard]] std::size_t segment_count(const Model& model) noexcept;
 
 // For each part, whether it is open: some edge of it is not met as often running one way as the
 // other, over the whole model (positions compared exactly, so a closed surface may be split
@@ -43,15 +49,15 @@ struct Model {
 // an open surface (a leaf, a plane, a lone triangle) drawn and lit from both sides.
 [[nodiscard]] Mesh both_sides(const Mesh& mesh);
 
-// The smallest axis-aligned box around every vertex the facets use, and the smallest sphere
-// about the box's centre that holds them all.
+// The smallest axis-aligned box around every vertex the facets, points and lines use, and the
+// smallest sphere about the box's centre that holds them all.
 struct Bounds {
     glm::dvec3 low;
     glm::dvec3 high;
     double radius;
     [[nodiscard]] glm::dvec3 centre() const noexcept { return (low + high) * 0.5; }
 };
-// Throws std::invalid_argument for a model with no facets.
+// Throws std::invalid_argument for a model with nothing to draw.
 [[nodiscard]] Bounds bounds_of(const Model& model);
 
 }  // namespace raster

@@ -24,10 +24,16 @@ namespace raster {
 [[nodiscard]] Model parse_scene_file(std::span<const std::uint8_t> bytes, const std::string& format,
                                      const ObjOptions& options = {});
 
-// read_obj for .obj (any letter case), read_scene_file for .gltf, .glb, .stl and .ply; any other
-// ending is refused with the list of those it reads, and a file whose first bytes are another
-// format's is refused saying what it looks like. The reader runs in a child process under
-// options.limits: a crash, a timeout or memory running out is one line naming the file.
+// read_obj for .obj (any letter case), read_scene_file for .gltf, .glb, .stl, .ply and the
+// further formats of model_endings(); a format raster knows but does not read is refused saying
+// why, any other ending with the list of those it reads, and a file whose first bytes are
+// another format's saying what it looks like (doc/conventions.md#model-formats). The reader runs in a child process
+// under options.limits: a crash, a timeout or memory running out is one line naming the file.
 [[nodiscard]] Model read_model(const std::filesystem::path& path, const ObjOptions& options = {});
+
+// ".obj, .gltf, .glb, ... or .zgl": every ending read_model takes.
+[[nodiscard]] std::string model_endings();
+// Whether read_model takes a file of this name's ending (any letter case).
+[[nodiscard]] bool has_model_ending(const std::filesystem::path& path);
 
 }  // namespace raster

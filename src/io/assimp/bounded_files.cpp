@@ -13,10 +13,10 @@
 namespace raster::detail {
 
 std::string structure_problem(std::span<const std::uint8_t> bytes, const std::string& extension,
-                              const std::filesystem::path& directory, const ObjOptions& options) {
+                              const std::filesystem::path& directory, const ObjOptions& options, PlyShape* ply) {
     if (extension == ".ply") {
         if (std::string problem = ply_header_problem(bytes); !problem.empty()) return problem;
-        return ply_counts_problem(bytes);
+        return ply_counts_problem(bytes, ply);
     }
     if (extension != ".gltf" && extension != ".glb") return "";
     return gltf_structure_problem(
@@ -84,7 +84,8 @@ Assimp::IOStream* BoundedFiles::Open(const char* file, const char* mode) {
         }
         auto bytes = std::make_unique<std::vector<std::uint8_t>>(read_input_file(file, rules));
         if (is_model) {
-            if (std::string problem = structure_problem(*bytes, extension_, model_.parent_path(), options_);
+            if (std::string problem =
+                    structure_problem(*bytes, extension_, model_.parent_path(), options_, &ply_shape_);
                 !problem.empty()) {
                 throw std::runtime_error(problem);
             }

@@ -3,6 +3,8 @@
 #include <raster/io/input_file.hpp>
 #include <raster/io/obj_file.hpp>
 
+#include "io/ply_header.hpp"
+
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -36,6 +38,8 @@ public:
     [[nodiscard]] const std::string& first_failure() const noexcept { return first_failure_; }
     // The same without the file's name: "does not exist".
     [[nodiscard]] const std::string& first_reason() const noexcept { return first_reason_; }
+    // What the model's body holds, when it is a PLY that passed its checks.
+    [[nodiscard]] const PlyShape& ply_shape() const noexcept { return ply_shape_; }
 
 private:
     static constexpr std::uint8_t kNoByte = 0;
@@ -50,11 +54,14 @@ private:
     std::unordered_set<TrackedStream*> open_;
     std::string first_failure_;
     std::string first_reason_;
+    PlyShape ply_shape_;
 };
 
 // The checks a model file passes before assimp parses it, on every open: assimp opens some
 // files twice, and a check made only the first time is no check. "" when it passes.
+// A PLY's shape goes to `ply` when given.
 [[nodiscard]] std::string structure_problem(std::span<const std::uint8_t> bytes, const std::string& extension,
-                                            const std::filesystem::path& directory, const ObjOptions& options);
+                                            const std::filesystem::path& directory, const ObjOptions& options,
+                                            PlyShape* ply = nullptr);
 
 }  // namespace raster::detail

@@ -4,6 +4,7 @@
 
 #include "io/assimp/bounded_files.hpp"
 #include "io/assimp/scene_model.hpp"
+#include "io/model_format.hpp"
 
 #include <raster/io/input_file.hpp>
 
@@ -52,9 +53,59 @@ std::vector<std::unique_ptr<Assimp::BaseImporter>> keep_only_reader(Assimp::Impo
 
 bool readable(const aiScene* scene) { return scene != nullptr && (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) == 0; }
 
-constexpr const char* kUnreadable = "not a glTF 2.0, STL or PLY model raster can read (or one it finds broken)";
+// The scene the importer read, once assimp's validation passes it (it refuses indices out of
+// range and broken arrays). Validation also refuses a mesh without faces, which is how assimp's
+// PLY reader gives a point cloud: each such mesh holds one point while it runs, and none after.
+const aiScene* validated(Assimp::Importer& importer) {
+    auto* scene = const_cast<aiScene*>(importer.GetScene());  // the importer's own, not yet handed out
+    if (scene == nullptr) return nullptr;
+    std::vector<aiMesh*> clouds;
+    for (unsigned i = 0; scene->mMeshes != nullptr && i < scene->mNumMeshes; ++i) {
+        aiMesh* mesh = scene->mMeshes[i];
+        if (mesh == nullptr || mesh->mNumFaces != 0 || mesh->mFaces != nullptr || mesh->mNumVertices == 0) continue;
+        mesh->mFaces = new aiFace[1];
+        mesh->mFaces[0].mNumIndices = 1;
+        mesh->mFaces[0].mIndices = new unsigned[1]{0};
+        mesh->mNumFaces = 1;
+        mesh->mPrimitiveTypes |= aiPrimitiveType_POINT;
+        clouds.push_back(mesh);
+    }
+    scene = const_cast<aiScene*>(importer.ApplyPostProcessing(aiProcess_ValidateDataStructure));
+    if (scene == nullptr) return nullptr;
+    for (aiMesh* mesh : clouds) {
+        delete[] mesh->mFaces;
+        mesh->mFaces = nullptr;
+        mesh->mNumFaces = 0;
+    }
+    return scene;
+}
+
+// Why assimp read nothing, in its reader's name: "not a Collada model raster can read (...)".
+std::string unreadable(const std::string& extension) {
+    const bool gltf = extension == ".gltf" || extension == ".glb";
+    const std::filesystem::path named = "model" + extension;
+    const std::string format = gltf ? "glTF 2.0" : detail::format_name(detail::model_format_of(named), named);
+    return "not " + detail::a_model(format) + " raster can read (or one it finds broken)";
+}
+
+// Why assimp read nothing from a PLY that passed raster's checks: cut short, or declaring no vertices.
+std::string ply_refusal(const detail::PlyShape& shape) {
+    if (!shape.cut_short.empty()) return shape.cut_short;
+    if (shape.vertices == 0) return std::string(kNothingToDraw) + " (its header declares no vertices)";
+    return unreadable(".ply");
+}
 
 }  // namespace
+
+namespace detail {
+
+bool assimp_claims(const std::string& ending) {
+    if (ending.size() < 2 || ending[0] != '.') return false;
+    const Assimp::Importer importer;
+    return importer.IsExtensionSupported(ending);
+}
+
+}  // namespace detail
 
 Model read_scene_file(const std::filesystem::path& path, const ObjOptions& options) {
     const std::string name = printable(path.string());
@@ -70,17 +121,22 @@ Model read_scene_file(const std::filesystem::path& path, const ObjOptions& optio
     if (FileIdentity identity; !identity_of(path, identity)) {
         // assimp would stop at its own existence check, giving no reason: InputFile gives one.
         if (Assimp::IOStream* stream = files->Open(path.c_str(), "rb")) files->Close(stream);
-        throw std::runtime_error(name + ": " + (files->first_reason().empty() ? kUnreadable : files->first_reason()));
+        throw std::runtime_error(name + ": " +
+                                 (files->first_reason().empty() ? unreadable(extension) : files->first_reason()));
     }
-    // Our own checks follow; assimp's validation refuses indices out of range and broken arrays.
-    const aiScene* scene = importer.ReadFile(path.string(), aiProcess_ValidateDataStructure);
+    // Our own checks follow validation's.
+    importer.ReadFile(path.string(), 0);
+    const aiScene* scene = validated(importer);
     if (!readable(scene)) {
         const std::string& why = files->first_failure();
         if (why.starts_with("'" + name + "' "))
             throw std::runtime_error(name + ": " + files->first_reason());  // the model itself
-        throw std::runtime_error(name + ": " + (why.empty() ? kUnreadable : why));
+        if (why.empty() && extension == ".ply") throw std::runtime_error(name + ": " + ply_refusal(files->ply_shape()));
+        throw std::runtime_error(name + ": " + (why.empty() ? unreadable(extension) : why));
     }
     detail::model_from_scene(*scene, path, name, detail::colour_space_of(extension), options, model);
+    if (!files->ply_shape().cut_short.empty())
+        model.warnings.push_back(name + ": " + files->ply_shape().cut_short + "; drawing what is there");
     return model;
 }
 
@@ -96,9 +152,9 @@ Model parse_scene_file(std::span<const std::uint8_t> bytes, const std::string& f
     importer.SetIOHandler(new BoundedFiles(no_files, model.sources));
     if (std::string problem = detail::structure_problem(bytes, "." + format, "", no_files); !problem.empty())
         throw std::runtime_error(name + ": " + problem);
-    const aiScene* scene =
-        importer.ReadFileFromMemory(bytes.data(), bytes.size(), aiProcess_ValidateDataStructure, format.c_str());
-    if (!readable(scene)) throw std::runtime_error(name + ": " + kUnreadable);
+    importer.ReadFileFromMemory(bytes.data(), bytes.size(), 0, format.c_str());
+    const aiScene* scene = validated(importer);
+    if (!readable(scene)) throw std::runtime_error(name + ": " + unreadable("." + format));
     detail::model_from_scene(*scene, "", name, detail::colour_space_of(format), no_files, model);
     return model;
 }

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -76,6 +77,10 @@ public:
     PolygonSoup soup() {
         if (scene_.mRootNode == nullptr) throw std::runtime_error("it holds no scene");
         visit(*scene_.mRootNode, glm::dmat4(1.0), 0);
+        if (unplaced_ > 0) {
+            model_.warnings.push_back(name_ + ": skipped " + std::to_string(unplaced_) +
+                                      " points or line ends that are not finite points");
+        }
         return std::move(soup_);
     }
 
@@ -120,9 +125,13 @@ private:
         const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(glm::dmat3(world)));
         for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
             const aiVector3D& p = mesh.mVertices[v];
-            if (!finite(p))
-                throw std::runtime_error("mesh '" + printable(mesh.mName.C_Str(), 80) +
-                                         "' has a vertex that is not a finite point");
+            if (!finite(p)) {  // only a face refuses it: a scanner marks missing points so
+                soup_.positions.emplace_back(std::numeric_limits<float>::quiet_NaN());
+                if (has_normals) soup_.normals.emplace_back(0.0F);
+                if (has_uvs) soup_.uvs.emplace_back(0.0F);
+                if (has_colours) soup_.colours.push_back({1.0F, 1.0F, 1.0F});
+                continue;
+            }
             const glm::dvec3 placed = glm::dvec3(world * glm::dvec4(p.x, p.y, p.z, 1.0));
             soup_.positions.emplace_back(placed.x, placed.y, -placed.z);
             if (mesh.mNormals != nullptr) {
@@ -140,30 +149,54 @@ private:
                     {linear_channel(c.r, colours_), linear_channel(c.g, colours_), linear_channel(c.b, colours_)});
             }
         }
+        const auto corner_at = [&](unsigned index) {
+            if (index >= mesh.mNumVertices) {
+                throw std::runtime_error("a face names vertex " + std::to_string(index) + " of a mesh of " +
+                                         std::to_string(mesh.mNumVertices));
+            }
+            const std::int64_t at = first + index;
+            return SoupCorner{at, has_normals ? at : kNoIndex, has_uvs ? at : kNoIndex, has_colours ? at : kNoIndex};
+        };
+        const auto drawable = [&](const SoupCorner& corner) {
+            if (std::isfinite(soup_.positions[static_cast<std::size_t>(corner.position)].x)) return true;
+            ++unplaced_;
+            return false;
+        };
+        const int material = static_cast<int>(mesh.mMaterialIndex);
+        if (mesh.mNumFaces == 0) {  // a point cloud, as assimp's PLY reader gives one
+            for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+                if (const SoupCorner corner = corner_at(v); drawable(corner))
+                    soup_.points.push_back({corner, material});
+            }
+        }
         std::vector<glm::dvec3> outline;
         std::vector<SoupCorner> corners;
         for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
             const aiFace& face = mesh.mFaces[f];
-            if (face.mNumIndices < 3) continue;  // points and lines draw nothing
+            if (face.mNumIndices == 1) {
+                if (const SoupCorner corner = corner_at(face.mIndices[0]); drawable(corner))
+                    soup_.points.push_back({corner, material});
+                continue;
+            }
+            if (face.mNumIndices == 2) {
+                const SoupCorner a = corner_at(face.mIndices[0]), b = corner_at(face.mIndices[1]);
+                if (drawable(a) && drawable(b)) soup_.segments.push_back({{a, b}, material});
+                continue;
+            }
+            if (face.mNumIndices == 0) continue;  // validation refuses these
             if (face.mNumIndices > kMaxFaceCorners)
                 throw std::runtime_error("a face of more than " + std::to_string(kMaxFaceCorners) + " corners");
             outline.clear();
             corners.clear();
             for (unsigned k = 0; k < face.mNumIndices; ++k) {
-                const unsigned index = face.mIndices[k];
-                if (index >= mesh.mNumVertices) {
-                    throw std::runtime_error("a face names vertex " + std::to_string(index) + " of a mesh of " +
-                                             std::to_string(mesh.mNumVertices));
-                }
-                const std::int64_t at = first + index;
-                corners.push_back(
-                    {at, has_normals ? at : kNoIndex, has_uvs ? at : kNoIndex, has_colours ? at : kNoIndex});
-                outline.emplace_back(soup_.positions[static_cast<std::size_t>(at)]);
+                corners.push_back(corner_at(face.mIndices[k]));
+                outline.emplace_back(soup_.positions[static_cast<std::size_t>(corners.back().position)]);
+                if (!std::isfinite(outline.back().x))
+                    throw std::runtime_error("mesh '" + printable(mesh.mName.C_Str(), 80) +
+                                             "' has a vertex that is not a finite point");
             }
-            for (const auto& [a, b, c] : triangles_of_polygon(outline)) {
-                soup_.triangles.push_back(
-                    {{corners[a], corners[c], corners[b]}, static_cast<int>(mesh.mMaterialIndex)});
-            }
+            for (const auto& [a, b, c] : triangles_of_polygon(outline))
+                soup_.triangles.push_back({{corners[a], corners[c], corners[b]}, material});
         }
         if (!soup_.normals.empty()) soup_.normals.resize(soup_.positions.size(), glm::vec3(0.0F));
         if (!soup_.uvs.empty()) soup_.uvs.resize(soup_.positions.size(), glm::vec2(0.0F));
@@ -209,6 +242,7 @@ private:
     const ObjOptions& options_;
     Model& model_;
     PolygonSoup soup_;
+    std::size_t unplaced_ = 0;  // points and line ends skipped for coordinates that are not finite
     std::unordered_set<const aiNode*> on_path_;
     std::map<std::string, std::shared_ptr<const Texture>> loaded_;
 };
@@ -219,7 +253,7 @@ ColourSpace colour_space_of(std::string format) {
     std::transform(format.begin(), format.end(), format.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     if (format.starts_with(".")) format.erase(0, 1);
-    return format == "ply" || format == "stl" ? ColourSpace::srgb : ColourSpace::linear;
+    return format == "gltf" || format == "glb" ? ColourSpace::linear : ColourSpace::srgb;
 }
 
 void model_from_scene(const aiScene& scene, const std::filesystem::path& path, const std::string& name,
@@ -241,7 +275,7 @@ void model_from_scene(const aiScene& scene, const std::filesystem::path& path, c
     } catch (const std::runtime_error& problem) {
         throw std::runtime_error(name + ": " + problem.what());
     }
-    if (model.parts.empty()) throw std::runtime_error(name + ": no faces to draw");
+    if (model.parts.empty()) throw std::runtime_error(name + ": " + kNothingToDraw);
 }
 
 }  // namespace raster::detail

@@ -11,8 +11,8 @@
 // glTF's metallic-roughness materials as Phong, their maps loaded.
 namespace raster::detail {
 
-// How a format writes vertex colours: glTF's COLOR_0 is linear; PLY and STL colours are the
-// bytes a screen shows, sRGB (doc/conventions.md#vertex-colours).
+// How a format writes vertex colours: glTF's COLOR_0 is linear; PLY, STL and every other
+// format's colours are the values a screen shows, sRGB (doc/conventions.md#vertex-colours).
 enum class ColourSpace { linear, srgb };
 
 // The colour space of a format named by its ending, with or without the dot, in any letter case.
