@@ -332,7 +332,8 @@ std::uint32_t word_at(std::span<const std::uint8_t> bytes, std::size_t at) {
 
 std::string gltf_structure_problem(
     std::span<const std::uint8_t> bytes, bool binary,
-    const std::function<std::optional<std::uint64_t>(std::string_view uri)>& external_size) {
+    const std::function<std::optional<std::uint64_t>(std::string_view uri)>& external_size,
+    std::vector<std::string>* extensions) {
     try {
         std::span<const std::uint8_t> json_bytes = bytes;
         std::optional<std::uint64_t> binary_chunk;
@@ -370,6 +371,14 @@ std::string gltf_structure_problem(
         }
         const std::vector<View> views = buffer_views(root, buffer_lengths(root, binary_chunk, external_size));
         check_accessors(root, views);
+        for (const char* list : {"extensionsUsed", "extensionsRequired"}) {
+            for (const Json& name : array_of(root, list)) {
+                if (extensions == nullptr || !name.is_string()) continue;
+                const std::string named = name.get<std::string>();
+                if (std::find(extensions->begin(), extensions->end(), named) == extensions->end())
+                    extensions->push_back(named);
+            }
+        }
         check_indices(root);
         check_node_graph(root);
         for (const Json& image : array_of(root, "images"))

@@ -6,6 +6,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 // A glTF file's structure checked before assimp reads it: every size it declares against the
 // bytes there are, every index against what it indexes, the nesting of its JSON and its nodes,
@@ -22,8 +23,10 @@ inline constexpr std::uint64_t kMaxGltfNodeInstances = std::uint64_t{1} << 18;
 // "" when the .gltf text or .glb file `bytes` holds together, else the first problem, as the end
 // of a sentence about the file. `external_size` gives the size of a buffer the file names by
 // URI, or nothing when it cannot be read (its reader says why later).
+// The names in extensionsUsed and extensionsRequired go to `extensions` when given, once each.
 [[nodiscard]] std::string gltf_structure_problem(
     std::span<const std::uint8_t> bytes, bool binary,
-    const std::function<std::optional<std::uint64_t>(std::string_view uri)>& external_size);
+    const std::function<std::optional<std::uint64_t>(std::string_view uri)>& external_size,
+    std::vector<std::string>* extensions = nullptr);
 
 }  // namespace raster::detail

@@ -62,6 +62,7 @@ std::string what_it_looks_like(std::span<const std::uint8_t> head, std::uintmax_
         {"\177ELF", "a program"},
         {"OFF", "an OFF model"},
     }};
+    if (raw.starts_with("\xFF\xFE") || raw.starts_with("\xFE\xFF")) return "UTF-16 text";
     for (const auto& [magic, name] : kMagic) {
         if (raw.starts_with(magic) || (magic == "OFF" && text.starts_with(magic))) return std::string(name);
     }
@@ -137,12 +138,15 @@ std::string content_problem(ModelFormat format, std::span<const std::uint8_t> he
     case ModelFormat::ply: fits = text_of(head).starts_with("ply\n") || text_of(head).starts_with("ply\r\n"); break;
     case ModelFormat::stl: fits = binary_stl(head, file_size) || starts_without_case(text, "solid"); break;
     case ModelFormat::obj: fits = what_it_looks_like(head, file_size).empty(); break;
-    case ModelFormat::other: fits = looks_like_its_ending(what_it_looks_like(head, file_size), ending_of(path)); break;
+    case ModelFormat::other:
+        fits = file_size > 0 && looks_like_its_ending(what_it_looks_like(head, file_size), ending_of(path));
+        break;
     }
     if (fits) return "";
     const std::string a_format = a_model(format_name(format, path));
     if (file_size == 0) return "is empty, not " + a_format;
     const std::string looks = what_it_looks_like(head, file_size);
+    if (looks == "UTF-16 text") return "is UTF-16 text, which raster does not read: save it as UTF-8";
     if (format == ModelFormat::stl && (looks.empty() || looks == "binary data")) {
         return "is not an STL model: not 'solid' text, and its triangle count does not match its size as a binary STL's must";
     }

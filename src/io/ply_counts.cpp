@@ -55,7 +55,8 @@ std::uint64_t least_bytes(const PlyElement& element, bool ascii) {
 
 std::string too_many(const PlyElement& element, std::size_t left, bool ascii) {
     if (element.count <= left / least_bytes(element, ascii)) return "";
-    return declares(element) + ", more than the " + std::to_string(left) + " bytes left";
+    return declares(element) + ", more than the " + std::to_string(left) +
+           " bytes left can hold: the file is cut short, or its header is wrong";
 }
 
 std::string cut_short(const PlyElement& element, std::uint64_t item) {

@@ -13,14 +13,16 @@
 namespace raster::detail {
 
 std::string structure_problem(std::span<const std::uint8_t> bytes, const std::string& extension,
-                              const std::filesystem::path& directory, const ObjOptions& options, PlyShape* ply) {
+                              const std::filesystem::path& directory, const ObjOptions& options, PlyShape* ply,
+                              std::vector<std::string>* extensions) {
     if (extension == ".ply") {
         if (std::string problem = ply_header_problem(bytes); !problem.empty()) return problem;
         return ply_counts_problem(bytes, ply);
     }
     if (extension != ".gltf" && extension != ".glb") return "";
     return gltf_structure_problem(
-        bytes, extension == ".glb", [&](std::string_view uri) -> std::optional<std::uint64_t> {
+        bytes, extension == ".glb",
+        [&](std::string_view uri) -> std::optional<std::uint64_t> {
             try {
                 std::error_code error;
                 const std::filesystem::path file = resolve_named_path(directory, std::string(uri), options.confine);
@@ -35,7 +37,8 @@ std::string structure_problem(std::span<const std::uint8_t> bytes, const std::st
             } catch (const std::runtime_error&) {
                 return std::nullopt;
             }
-        });
+        },
+        extensions);
 }
 
 // A stream over bytes in memory that leaves `open` when deleted, whoever deletes it.
@@ -84,8 +87,8 @@ Assimp::IOStream* BoundedFiles::Open(const char* file, const char* mode) {
         }
         auto bytes = std::make_unique<std::vector<std::uint8_t>>(read_input_file(file, rules));
         if (is_model) {
-            if (std::string problem =
-                    structure_problem(*bytes, extension_, model_.parent_path(), options_, &ply_shape_);
+            if (std::string problem = structure_problem(*bytes, extension_, model_.parent_path(), options_, &ply_shape_,
+                                                        &gltf_extensions_);
                 !problem.empty()) {
                 throw std::runtime_error(problem);
             }

@@ -137,6 +137,7 @@ Model read_scene_file(const std::filesystem::path& path, const ObjOptions& optio
     detail::model_from_scene(*scene, path, name, detail::colour_space_of(extension), options, model);
     if (!files->ply_shape().cut_short.empty())
         model.warnings.push_back(name + ": " + files->ply_shape().cut_short + "; drawing what is there");
+    detail::warn_of_unsupported_extensions(files->gltf_extensions(), name, model);
     return model;
 }
 

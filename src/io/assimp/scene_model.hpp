@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 #include <assimp/scene.h>
 
 // The Model of a scene assimp read: every node's meshes placed, faces split and re-wound,
@@ -22,5 +23,8 @@ enum class ColourSpace { linear, srgb };
 // messages. Throws std::runtime_error naming `name` for a scene it cannot use.
 void model_from_scene(const aiScene& scene, const std::filesystem::path& path, const std::string& name,
                       ColourSpace colours, const ObjOptions& options, Model& model);
+
+// One warning naming the glTF extensions among `used` that raster does not draw, if any.
+void warn_of_unsupported_extensions(const std::vector<std::string>& used, const std::string& name, Model& model);
 
 }  // namespace raster::detail
