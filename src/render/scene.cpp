@@ -30,7 +30,7 @@ PerspectiveScene in_perspective(const Scene& scene, int width, int height, doubl
 
 double automatic_point_size(double area, std::size_t count) noexcept {
     if (count == 0 || !(area > 0.0)) return kMinPointSize;
-    return std::clamp(2.0 * std::sqrt(area / static_cast<double>(count)), kMinPointSize, 16.0);
+    return std::clamp(2.5 * std::sqrt(area / static_cast<double>(count)), kMinPointSize, 16.0);
 }
 
 void check_points_and_lines(const PointsAndLines& style) {

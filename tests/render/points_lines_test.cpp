@@ -164,8 +164,8 @@ TEST(PointsAndLines, IndicesOutOfRangeAreRefused) {
     EXPECT_THROW(raster::render(image, scene_of(mesh), depth), std::invalid_argument);
 }
 
-TEST(PointsAndLines, AutomaticSizeIsTwiceTheSpacingOnScreen) {
-    EXPECT_DOUBLE_EQ(raster::automatic_point_size(400.0, 100), 4.0);
+TEST(PointsAndLines, AutomaticSizeIsTwoAndAHalfSpacingsOnScreen) {
+    EXPECT_DOUBLE_EQ(raster::automatic_point_size(400.0, 100), 5.0);
     EXPECT_DOUBLE_EQ(raster::automatic_point_size(1e6, 1), 16.0);
     EXPECT_DOUBLE_EQ(raster::automatic_point_size(1.0, 1000000), 1.0);
     EXPECT_DOUBLE_EQ(raster::automatic_point_size(0.0, 0), 1.0);

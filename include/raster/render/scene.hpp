@@ -53,7 +53,8 @@ inline constexpr double kMinPointSize = 1.0, kMaxPointSize = 64.0;
 inline constexpr double kMinLineWidth = 0.5, kMaxLineWidth = 64.0;
 
 // The splat diameter that makes `count` points spread over a screen box of `area` square pixels
-// read as a surface: twice their mean spacing, sqrt(area / count), between 1 and 16 pixels.
+// read as a surface, even a closed one whose back holds half of them: 2.5 times sqrt(area / count), between 1 and 16
+// pixels.
 [[nodiscard]] double automatic_point_size(double area, std::size_t count) noexcept;
 
 // Throws std::invalid_argument for a size that is not finite or lies outside its range above.
