@@ -11,6 +11,7 @@
 #include "rasterize/strip_bins.hpp"
 #include "rasterize/worker_team.hpp"
 #include "render/depth_first.hpp"
+#include "render/draw_points_lines.hpp"
 #include "render/shader_choice.hpp"
 
 #include <algorithm>
@@ -74,7 +75,9 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
         using Shader = std::remove_cvref_t<decltype(shader)>;
         const bool per_facet = Shader::kFacetNormal || object.mesh->surface == Surface::faceted;
         detail::check_drawable(framebuffer, tested, *object.mesh);  // before posing reads its facets
-        detail::Posing posing(*object.mesh, object.model, {.vertex_normals = !per_facet, .facet_normals = per_facet});
+        const bool dots = !object.mesh->points.empty() || !object.mesh->segments.empty();  // lit by vertex normals
+        detail::Posing posing(*object.mesh, object.model,
+                              {.vertex_normals = !per_facet || dots, .facet_normals = per_facet});
         const Mesh& mesh = posing.mesh();  // sized now, filled by the batches below
         auto front = front_for(mesh, shader);
         const std::size_t vertices = mesh.positions.size(), facets = mesh.facets.size();
@@ -82,7 +85,7 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
         team.for_each(batches(vertices, vertex_batch), [&](int b) {
             const auto [begin, end] = range(b, vertices, vertex_batch);
             posing.vertices(begin, end);
-            front.vertices(begin, end);  // reads vertex i's posed data only
+            if (facets != 0) front.vertices(begin, end);  // reads vertex i's posed data only
         });
         std::vector<detail::StripBins<typename Shader::Varying>> bins(
             static_cast<std::size_t>(batches(facets, facet_batch)),
@@ -115,6 +118,10 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
             lanes.flush();
         });
         cleared = true;
+        if constexpr (!DepthOnly<Shader>) {  // points and lines are drawn in the shading pass only
+            detail::draw_points_lines(scene.camera, scene.points_and_lines, object, mesh, shader, team, layout,
+                                      {&framebuffer, tested, samples, depth_test, multisampling.offsets});
+        }
         return std::accumulate(counted.begin(), counted.end(), std::size_t{0});
     };
     const bool depth_pass =

@@ -42,6 +42,24 @@ struct SceneObject {
     Sampler sampler{};
 };
 
+// How a mesh's points and segments are drawn (doc/conventions.md#points-and-lines): points as
+// round splats of `point_size` pixels across, by default sized from each object's points' density
+// on screen (automatic_point_size); segments as lines `line_width` pixels wide.
+struct PointsAndLines {
+    std::optional<double> point_size{};
+    double line_width = 1.5;
+};
+inline constexpr double kMinPointSize = 1.0, kMaxPointSize = 64.0;
+inline constexpr double kMinLineWidth = 0.5, kMaxLineWidth = 64.0;
+
+// The splat diameter that makes `count` points spread over a screen box of `area` square pixels
+// read as a surface, even a closed one whose back holds half of them: 2.5 times sqrt(area / count), between 1 and 16
+// pixels.
+[[nodiscard]] double automatic_point_size(double area, std::size_t count) noexcept;
+
+// Throws std::invalid_argument for a size that is not finite or lies outside its range above.
+void check_points_and_lines(const PointsAndLines& style);
+
 // Everything one frame shows, seen through an orthographic or a perspective camera.
 template <typename Camera>
 struct BasicScene {
@@ -56,6 +74,7 @@ struct BasicScene {
     // Depth kept even where the scene needs none, so that the caller can read what was drawn for
     // a transparent background: Renderer::coverage (or, at one sample, DepthBuffer::coverage).
     bool keep_depth = false;
+    PointsAndLines points_and_lines{};
 };
 using Scene = BasicScene<OrthoCamera>;
 using PerspectiveScene = BasicScene<PerspectiveCamera>;
