@@ -2,7 +2,6 @@
 #include <raster/io/model.hpp>
 #include <raster/io/model_file.hpp>
 
-#include "support/model_files.hpp"
 #include "support/scratch.hpp"
 
 #include <gtest/gtest.h>
@@ -12,9 +11,22 @@
 
 namespace {
 
+// A glTF 2.0 triangle facing +z drawn with `material`, the JSON of its one material; the buffer
+// holds the corners (-1, -1, 0), (1, -1, 0) and (0, 1, 0) as little-endian floats.
+std::string triangle_with(const std::string& material) {
+    return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "material": 0}]}], "materials": [)" +
+           material + R"(],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [-1, -1, 0], "max": [1, 1, 0]}],
+  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36}],
+  "buffers": [{"byteLength": 36,
+               "uri": "data:application/octet-stream;base64,AACAvwAAgL8AAAAAAACAPwAAgL8AAAAAAAAAAAAAgD8AAAAA"}]}
+)";
+}
+
 raster::Model read_with(const std::string& material) {
     const test_support::ScratchDir dir;
-    test_support::write_text(dir / "triangle.gltf", test_support::gltf_triangle_with_material(material));
+    test_support::write_text(dir / "triangle.gltf", triangle_with(material));
     return raster::read_model(dir / "triangle.gltf");
 }
 

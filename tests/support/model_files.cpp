@@ -219,18 +219,6 @@ std::string gltf_coloured_triangle(float red, float green, float blue) {
            base64(buffer) + "\"}]}\n";
 }
 
-std::string gltf_triangle_with_material(const std::string& material) {
-    std::string buffer;
-    for (const float v : {-1.0F, -1.0F, 0.0F, 1.0F, -1.0F, 0.0F, 0.0F, 1.0F, 0.0F}) append_raw(buffer, v);
-    return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
-  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "material": 0}]}], "materials": [)" +
-           material + R"(],
-  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [-1, -1, 0], "max": [1, 1, 0]}],
-  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36}],
-  "buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64,)" +
-           base64(buffer) + "\"}]}\n";
-}
-
 std::string stl_tetrahedron_binary(std::array<std::uint16_t, 4> attributes) {
     std::string stl(80, ' ');
     append_raw(stl, std::uint32_t{4});

@@ -36,8 +36,6 @@ std::filesystem::path write_crate_on_floor(const std::filesystem::path& folder);
 std::string gltf_two_squares();
 // A glTF 2.0 triangle whose three corners have the linear COLOR_0 `colour`, no material.
 std::string gltf_coloured_triangle(float red, float green, float blue);
-// A glTF 2.0 triangle facing +z drawn with `material`, the JSON of its one material.
-std::string gltf_triangle_with_material(const std::string& material);
 // A tetrahedron with one corner at the origin, as ASCII and as binary STL (the same facets);
 // the binary one's facets carry `attributes`, where bit 15 marks a colour of 5-bit channels,
 // red in bits 10-14 (VisCAM and SolidView's convention).
