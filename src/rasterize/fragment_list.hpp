@@ -2,13 +2,14 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <deque>
+#include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 // The fragments of transparent surfaces that fell in one strip of rows, kept whole until the
-// strip resolves (doc/conventions.md#transparency): a deque, so that the colour a shader is yet
-// to write keeps its address while later fragments are added.
+// strip resolves (doc/conventions.md#transparency): in chunks that never move, so that the
+// colour a shader is yet to write keeps its address while later fragments are added.
 namespace raster::detail {
 
 struct Fragment {
@@ -28,18 +29,28 @@ public:
     explicit FragmentList(std::size_t cap = 0) noexcept : cap_(cap) {}
 
     Fragment& add(float depth, float alpha, std::uint32_t pixel, std::uint16_t samples) {
-        if (fragments_.size() >= cap_) {
+        if (size_ >= cap_) {
             throw std::length_error("the transparent surfaces of this frame overlap in more than " +
                                     std::to_string(kMaxFragmentBytes >> 20) +
                                     " MiB of fragments; draw it smaller or with fewer samples");
         }
-        return fragments_.push_back({depth, alpha, pixel, samples, {0, 0, 0}}), fragments_.back();
+        if (size_ % kChunk == 0 && size_ / kChunk == chunks_.size())
+            chunks_.push_back(std::make_unique<Fragment[]>(kChunk));
+        Fragment& added = (*this)[size_++];
+        added = {depth, alpha, pixel, samples, {0, 0, 0}};
+        return added;
     }
-    [[nodiscard]] std::deque<Fragment>& fragments() noexcept { return fragments_; }
+    [[nodiscard]] std::size_t size() const noexcept { return size_; }
+    [[nodiscard]] bool empty() const noexcept { return size_ == 0; }
+    [[nodiscard]] Fragment& operator[](std::size_t i) noexcept { return chunks_[i / kChunk][i % kChunk]; }
+    // Forgets the fragments, keeping their memory for the next frame.
+    void clear() noexcept { size_ = 0; }
 
 private:
+    static constexpr std::size_t kChunk = 4096;
     std::size_t cap_;
-    std::deque<Fragment> fragments_;
+    std::size_t size_ = 0;
+    std::vector<std::unique_ptr<Fragment[]>> chunks_;
 };
 
 }  // namespace raster::detail
