@@ -30,6 +30,7 @@
 
 #include <raster/shade/intensity_lighting.hpp>
 #include <raster/shade/linear_lighting.hpp>
+#include <raster/shade/opacity.hpp>
 #include <raster/shade/shaders.hpp>
 #include <raster/shade/texture.hpp>
 #include <raster/shade/textured_shaders.hpp>

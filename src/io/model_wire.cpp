@@ -70,7 +70,8 @@ std::size_t model_wire_size(const Model& model) noexcept {
                 m.uvs.size() * sizeof(glm::vec2) + m.colours.size() * sizeof(LinearRgb) +
                 m.points.size() * sizeof(std::uint32_t) + m.segments.size() * sizeof(m.segments[0]);
         if (part.texture && counted.emplace(part.texture.get(), true).second)
-            size += 64 + part.texture->level(0).bytes().size() * 4 / 3 + 64 * part.texture->level_count();
+            size += 64 + part.texture->level(0).bytes().size() * 4 / 3 + 64 * part.texture->level_count() +
+                    part.texture->alpha_plane().size();
     }
     for (const std::string& warning : model.warnings) size += 8 + warning.size();
     for (const InputRecord& source : model.sources) size += 64 + source.path.native().size() + source.role.size();
@@ -96,6 +97,7 @@ void append_model_wire(const Model& model, std::vector<std::uint8_t>& out) {
             wire.value(image.height());
             wire.array(image.bytes());
         }
+        wire.array(texture->alpha_plane());
     }
     wire.value(static_cast<std::uint64_t>(model.parts.size()));
     for (const ModelPart& part : model.parts) {
@@ -109,6 +111,9 @@ void append_model_wire(const Model& model, std::vector<std::uint8_t>& out) {
         wire.value(part.texture ? numbers.at(part.texture.get()) : UINT32_MAX);
         wire.value(static_cast<std::uint8_t>(part.sampler.filter));
         wire.value(static_cast<std::uint8_t>(part.sampler.wrap));
+        wire.value(static_cast<std::uint8_t>(part.opacity.mode));
+        wire.value(part.opacity.factor);
+        wire.value(part.opacity.cutoff);
     }
     wire.value(static_cast<std::uint64_t>(model.warnings.size()));
     for (const std::string& warning : model.warnings) wire.text(warning);
@@ -139,8 +144,9 @@ Model model_from_wire(std::span<const std::uint8_t> bytes) {
                 WireReader::broken();
             levels.emplace_back(width, height, std::move(rgb));
         }
+        std::vector<std::uint8_t> alpha = wire.array<std::uint8_t>();
         try {
-            texture = std::make_shared<const Texture>(Texture::from_levels(std::move(levels)));
+            texture = std::make_shared<const Texture>(Texture::from_levels(std::move(levels), std::move(alpha)));
         } catch (const std::invalid_argument&) {
             WireReader::broken();
         }
@@ -168,6 +174,12 @@ Model model_from_wire(std::span<const std::uint8_t> bytes) {
             wrap > static_cast<std::uint8_t>(TextureWrap::clamp))
             WireReader::broken();
         part.sampler = {static_cast<TextureFilter>(filter), static_cast<TextureWrap>(wrap)};
+        const auto mode = wire.value<std::uint8_t>();
+        part.opacity = {static_cast<AlphaMode>(mode), wire.value<float>(), wire.value<float>()};
+        const auto unit = [](float v) { return v >= 0.0F && v <= 1.0F; };  // false for NaN too
+        if (mode > static_cast<std::uint8_t>(AlphaMode::blend) || !unit(part.opacity.factor) ||
+            !unit(part.opacity.cutoff))
+            WireReader::broken();
         model.parts.push_back(std::move(part));
     }
     const auto warnings = wire.value<std::uint64_t>();

@@ -2,6 +2,7 @@
 #include <raster/io/obj_file.hpp>
 
 #include "geometry/polygon_triangles.hpp"
+#include "io/alpha_reading.hpp"
 #include "io/input_stream.hpp"
 #include "io/model_builder.hpp"
 #include "io/named_path.hpp"
@@ -336,14 +337,14 @@ Model model_from(std::istream& obj, const std::string& name, const detail::ObjSu
     }
     std::map<std::filesystem::path, std::shared_ptr<const Texture>> loaded;  // by canonical path: each file read once
     std::size_t texels = 0;
-    bool translucent = false;
     for (auto& [id, mesh] : detail::meshes_by_material(soup, options.crease_degrees)) {
         ModelPart part{"", std::move(mesh), default_model_material()};
         if (id >= 0 && static_cast<std::size_t>(id) < materials.size()) {
             const tinyobj::material_t& m = materials[static_cast<std::size_t>(id)];
             part.material_name = m.name;
             part.material = material_from(m);
-            translucent = translucent || m.dissolve < 1.0F;
+            part.opacity =
+                detail::blended_by(m.dissolve, name + ": material '" + printable(m.name) + "' has d", model.warnings);
             part.sampler.wrap = m.diffuse_texopt.clamp ? TextureWrap::clamp : TextureWrap::repeat;
             const std::string material = "material '" + printable(m.name) + "'";
             if (!m.diffuse_texname.empty() && load_maps) {
@@ -381,8 +382,6 @@ Model model_from(std::istream& obj, const std::string& name, const detail::ObjSu
         }
         model.parts.push_back(std::move(part));
     }
-    if (translucent)
-        model.warnings.push_back(name + ": transparency (d below 1) is not supported; drawing those materials opaque");
     // One line per distinct warning, however often the file repeats its cause.
     std::vector<std::string> distinct;
     std::unordered_set<std::string> seen;

@@ -4,6 +4,7 @@
 
 #include "geometry/posing.hpp"
 #include "rasterize/depth_only.hpp"
+#include "rasterize/fragment_triangle.hpp"
 #include "rasterize/multisample_triangle.hpp"
 #include "rasterize/sample_buffer.hpp"
 #include "rasterize/setup_ortho.hpp"
@@ -12,6 +13,7 @@
 #include "rasterize/worker_team.hpp"
 #include "render/depth_first.hpp"
 #include "render/draw_points_lines.hpp"
+#include "render/fragment_resolve.hpp"
 #include "render/shader_choice.hpp"
 
 #include <algorithm>
@@ -44,6 +46,15 @@ struct Multisampling {
     std::uint8_t* alpha = nullptr;
 };
 
+// How an object's alpha is drawn: not at all, blended, or masked sample by sample (a mask
+// without a texture alpha shows whole or not at all, and draws as an opaque object).
+enum class AlphaKind { none, blend, mask };
+inline AlphaKind alpha_kind_of(const SceneObject& object) noexcept {
+    if (blends(object.opacity)) return AlphaKind::blend;
+    const bool mapped = object.texture && object.texture->has_alpha();
+    return object.opacity.mode == AlphaMode::mask && mapped ? AlphaKind::mask : AlphaKind::none;
+}
+
 template <detail::Interpolation kMode, typename Camera, typename FrontFor>
 std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& scene, DepthBuffer& depth,
                            std::optional<glm::vec3> eye, detail::WorkerTeam& team, FrontFor front_for,
@@ -70,11 +81,22 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
         framebuffer.clear_rows(strip.y, strip.y + strip.height, scene.background);
         if (tested != nullptr) tested->clear_rows(strip.y, strip.y + strip.height);
     };
+    // Blend objects' fragments, one list per strip, kept from when they are drawn until the strip resolves.
+    std::vector<detail::FragmentList> fragments;
     // One object through `shader`: posed, put through the front end, binned and drawn strip by strip.
     const auto draw_object = [&](const SceneObject& object, const auto& shader) {
         using Shader = std::remove_cvref_t<decltype(shader)>;
         const bool per_facet = Shader::kFacetNormal || object.mesh->surface == Surface::faceted;
         detail::check_drawable(framebuffer, tested, *object.mesh);  // before posing reads its facets
+        const AlphaKind alpha_kind = DepthOnly<Shader> ? AlphaKind::none : alpha_kind_of(object);
+        const Texture* alpha_map = object.texture && object.texture->has_alpha() ? object.texture.get() : nullptr;
+        const auto alpha_of = [&](const typename Shader::Varying& varying) {
+            if constexpr (requires { varying.uv; }) {
+                if (alpha_map != nullptr)
+                    return object.opacity.factor * alpha_map->alpha(varying.uv, object.sampler.wrap);
+            }
+            return object.opacity.factor;
+        };
         const bool dots = !object.mesh->points.empty() || !object.mesh->segments.empty();  // lit by vertex normals
         detail::Posing posing(*object.mesh, object.model,
                               {.vertex_normals = !per_facet || dots, .facet_normals = per_facet});
@@ -106,7 +128,13 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
             detail::LaneBatch<Shader> lanes(shader);  // open across the strip's triangles: full batches on small ones
             for (const auto& batch : bins) {
                 batch.for_each_in(s, [&](const auto& corners) {
-                    if (samples != nullptr) {
+                    if (alpha_kind != AlphaKind::none) {
+                        detail::gather_triangle<Shader, kMode>(
+                            alpha_kind == AlphaKind::blend ? &fragments[static_cast<std::size_t>(s)] : nullptr,
+                            {samples, tested, &framebuffer}, framebuffer.width(), corners, shader, alpha_of,
+                            object.opacity.cutoff, strip,
+                            samples != nullptr ? multisampling.offsets : std::span(detail::kCentreOnly), lanes);
+                    } else if (samples != nullptr) {
                         detail::shade_triangle_samples<Shader, kMode>(*samples, depth_test, corners, shader, strip,
                                                                       multisampling.offsets, &lanes);
                     } else {
@@ -133,22 +161,48 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
         // nearest depth: the same picture (the last facet at that depth wins, as it would),
         // without shading the surfaces hidden behind it.
         for (const SceneObject& object : scene.objects) {
-            if (object.mesh) draw_object(object, detail::DepthOnlyShader{});
+            if (object.mesh && alpha_kind_of(object) == AlphaKind::none && shows(object.opacity))
+                draw_object(object, detail::DepthOnlyShader{});
         }
     }
     std::size_t drawn = 0;
     for (const SceneObject& object : scene.objects) {
-        if (!object.mesh) continue;  // an object without a mesh shows nothing
+        if (!object.mesh || blends(object.opacity) || !shows(object.opacity)) continue;  // blended below
         drawn += draw_shaded(object, scene.lights, scene.point_lights, to_eye, eye, scene.darkening,
                              [&](const auto& shader) { return draw_object(object, shader); });
     }
     if (!cleared) {
         team.for_each(layout.count(), [&](int s) { clear(layout.strip(s)); });
     }
+    const bool blending = std::any_of(scene.objects.begin(), scene.objects.end(),
+                                      [](const SceneObject& o) { return o.mesh && blends(o.opacity); });
+    if (blending) {  // after every opaque object, so that the fragments are tested against them all
+        const std::size_t frame_pixels =
+            static_cast<std::size_t>(framebuffer.width()) * static_cast<std::size_t>(framebuffer.height());
+        for (int s = 0; s < layout.count(); ++s) {
+            const auto strip_pixels =
+                static_cast<std::size_t>(layout.strip(s).height) * static_cast<std::size_t>(framebuffer.width());
+            fragments.emplace_back(kMaxFragmentBytes / sizeof(Fragment) * strip_pixels / frame_pixels);
+        }
+        for (const SceneObject& object : scene.objects) {
+            if (!object.mesh || !blends(object.opacity)) continue;
+            drawn += draw_shaded(object, scene.lights, scene.point_lights, to_eye, eye, scene.darkening,
+                                 [&](const auto& shader) { return draw_object(object, shader); });
+        }
+    }
     if (samples != nullptr) {
         team.for_each(layout.count(), [&](int s) {
             const PixelRect strip = layout.strip(s);
             samples->resolve_rows(strip.y, strip.y + strip.height, framebuffer, scene.background, multisampling.alpha);
+            if (blending)
+                resolve_fragments(fragments[static_cast<std::size_t>(s)], {&framebuffer, samples, nullptr},
+                                  multisampling.alpha, strip.y, strip.y + strip.height);
+        });
+    } else if (blending) {
+        team.for_each(layout.count(), [&](int s) {
+            const PixelRect strip = layout.strip(s);
+            resolve_fragments(fragments[static_cast<std::size_t>(s)], {&framebuffer, nullptr, tested},
+                              multisampling.alpha, strip.y, strip.y + strip.height);
         });
     }
     return drawn;

@@ -6,6 +6,7 @@
 #include "render/draw_objects.hpp"
 #include "render/sample_resolve.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -29,9 +30,17 @@ std::size_t draw_samples(Framebuffer& framebuffer, const BasicScene<Camera>& sce
                          detail::WorkerTeam& team, RenderOptions options, detail::SampleBuffer& buffer,
                          std::vector<std::uint8_t>* alpha) {
     const std::span<const glm::vec2> offsets = sample_offsets(options.samples);
-    if (offsets.size() == 1) return draw(framebuffer, scene, depth, team, options.depth_first);
     const std::size_t pixels =
         static_cast<std::size_t>(framebuffer.width()) * static_cast<std::size_t>(framebuffer.height());
+    const bool blending = std::any_of(scene.objects.begin(), scene.objects.end(),
+                                      [](const SceneObject& o) { return o.mesh && blends(o.opacity); });
+    if (offsets.size() == 1) {
+        // Under transparent surfaces the depth buffer's coverage is not the alpha: the draw writes it.
+        const bool composited = alpha != nullptr && scene.keep_depth && blending;
+        if (alpha != nullptr) alpha->assign(composited ? pixels : 0, 0);
+        return draw(framebuffer, scene, depth, team, options.depth_first,
+                    {nullptr, {}, composited ? alpha->data() : nullptr});
+    }
     if (!options.shade_every_sample && pixels * offsets.size() * 7 <= kMaxSampleBufferBytes) {
         std::array<detail::SampleOffset, detail::kMaxSamples> at{};
         for (std::size_t s = 0; s < offsets.size(); ++s) {
@@ -57,11 +66,13 @@ std::size_t draw_samples(Framebuffer& framebuffer, const BasicScene<Camera>& sce
     Framebuffer pass(framebuffer.width(), framebuffer.height());
     BasicScene<Camera> moved = scene;
     std::size_t drawn = 0;
+    std::vector<std::uint8_t> pass_alpha(with_alpha && blending ? pixels : 0);
     for (const glm::vec2 offset : offsets) {
         moved.camera = scene.camera.sampled_at(glm::dvec2(offset));
-        drawn = draw(pass, moved, depth, team, options.depth_first);
+        drawn = draw(pass, moved, depth, team, options.depth_first,
+                     {nullptr, {}, pass_alpha.empty() ? nullptr : pass_alpha.data()});
         if (with_alpha) {
-            resolve.add(pass, depth.coverage());
+            resolve.add(pass, pass_alpha.empty() ? depth.coverage() : pass_alpha);
         } else {
             resolve.add(pass);
         }

@@ -161,7 +161,8 @@ std::vector<SceneObject> ModelStage::objects(double turn) const {
     std::vector<SceneObject> objects;
     for (std::size_t i = 0; i < meshes_.size(); ++i) {
         const ModelPart& part = model_->parts[i];
-        objects.push_back({meshes_[i], turned, part.material, shading_, std::nullopt, part.texture, part.sampler});
+        objects.push_back(
+            {meshes_[i], turned, part.material, shading_, std::nullopt, part.texture, part.sampler, part.opacity});
     }
     return objects;
 }

@@ -55,6 +55,8 @@ std::size_t Renderer::render(Framebuffer& framebuffer, const Scene& scene) {
 std::size_t Renderer::render(Framebuffer& framebuffer, const PerspectiveScene& scene) {
     return detail::draw_samples(framebuffer, scene, depth_, *team_, options_, *samples_buffer_, &coverage_);
 }
-std::vector<std::uint8_t> Renderer::coverage() const { return options_.samples == 1 ? depth_.coverage() : coverage_; }
+std::vector<std::uint8_t> Renderer::coverage() const {
+    return options_.samples == 1 && coverage_.empty() ? depth_.coverage() : coverage_;  // drawn under transparency
+}
 
 }  // namespace raster

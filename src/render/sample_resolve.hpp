@@ -12,7 +12,8 @@ namespace raster::detail {
 
 class SampleResolve {
 public:
-    // `with_alpha`: each pass comes with its coverage (255 drawn, 0 not), and the resolve keeps
+    // `with_alpha`: each pass comes with its coverage (255 drawn, 0 not, between: the alpha of
+    // transparent surfaces, weighting the pass's colour), and the resolve keeps
     // the colour of the surfaces apart from the share of samples they cover.
     SampleResolve(int width, int height, bool with_alpha);
     void add(const Framebuffer& pass, std::span<const std::uint8_t> coverage = {});
@@ -25,8 +26,8 @@ private:
     int height_;
     bool with_alpha_;
     int passes_ = 0;
-    std::vector<float> sums_;  // three per pixel
-    std::vector<std::uint16_t> covered_;
+    std::vector<float> sums_;     // three per pixel
+    std::vector<float> covered_;  // the passes' coverage, each 0..1
 };
 
 }  // namespace raster::detail

@@ -54,7 +54,24 @@ Texture::Texture(Framebuffer image) : Texture() {
         levels_.push_back(halved(levels_.back(), linear_from_byte_));
 }
 
-Texture Texture::from_levels(std::vector<Framebuffer> levels) {
+Texture::Texture(Framebuffer image, std::vector<std::uint8_t> alpha) : Texture(std::move(image)) {
+    const std::size_t texels = static_cast<std::size_t>(width()) * static_cast<std::size_t>(height());
+    if (alpha.size() != texels) throw std::invalid_argument("an alpha plane differs in size from its image");
+    if (std::any_of(alpha.begin(), alpha.end(), [](std::uint8_t a) { return a != 255; })) alpha_ = std::move(alpha);
+}
+
+float Texture::alpha(glm::vec2 uv, TextureWrap wrap) const noexcept {
+    if (alpha_.empty()) return 1.0F;
+    const int w = width(), h = height();
+    const float u = wrapped(uv.x, wrap), v = wrapped(uv.y, wrap);
+    const int x = std::min(static_cast<int>(u * static_cast<float>(w)), w - 1);
+    const int y = std::min(static_cast<int>((1.0F - v) * static_cast<float>(h)), h - 1);  // row 0 at v = 1
+    return static_cast<float>(
+               alpha_[static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x)]) /
+           255.0F;
+}
+
+Texture Texture::from_levels(std::vector<Framebuffer> levels, std::vector<std::uint8_t> alpha) {
     for (std::size_t i = 1; i < levels.size(); ++i) {
         if (levels[i].width() != std::max(1, levels[i - 1].width() / 2) ||
             levels[i].height() != std::max(1, levels[i - 1].height() / 2)) {
@@ -65,6 +82,10 @@ Texture Texture::from_levels(std::vector<Framebuffer> levels) {
         throw std::invalid_argument("a mip chain must end at 1 x 1");
     Texture texture;
     texture.levels_ = std::move(levels);
+    const std::size_t texels = static_cast<std::size_t>(texture.width()) * static_cast<std::size_t>(texture.height());
+    if (!alpha.empty() && alpha.size() != texels)
+        throw std::invalid_argument("an alpha plane differs in size from its image");
+    texture.alpha_ = std::move(alpha);
     return texture;
 }
 

@@ -3,6 +3,7 @@
 #include <raster/geometry/mesh.hpp>
 #include <raster/io/input_file.hpp>
 #include <raster/shade/linear_lighting.hpp>
+#include <raster/shade/opacity.hpp>
 #include <raster/shade/texture.hpp>
 
 #include <cstddef>
@@ -20,6 +21,7 @@ struct ModelPart {
     LinearMaterial material;
     std::shared_ptr<const Texture> texture{};  // the diffuse map, when it loaded
     Sampler sampler{};
+    Opacity opacity{};  // from MTL d and Tr, glTF alphaMode and base colour alpha
 };
 
 struct Model {

@@ -8,6 +8,7 @@
 #include <raster/rasterize/depth_buffer.hpp>
 #include <raster/shade/intensity_lighting.hpp>
 #include <raster/shade/linear_lighting.hpp>
+#include <raster/shade/opacity.hpp>
 #include <raster/shade/texture.hpp>
 
 #include <cstdint>
@@ -40,6 +41,8 @@ struct SceneObject {
     // diffuse colour; intensity materials ignore it.
     std::shared_ptr<const Texture> texture{};
     Sampler sampler{};
+    // Blend objects are drawn after every other, composited in depth order (doc/conventions.md#transparency).
+    Opacity opacity{};
 };
 
 // How a mesh's points and segments are drawn (doc/conventions.md#points-and-lines): points as

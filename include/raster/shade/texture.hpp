@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 #include <glm/vec2.hpp>
 
@@ -44,16 +45,24 @@ class Texture {
 public:
     // Adopts an image whose row 0 is its top row, its bytes sRGB-encoded; builds the mip chain.
     explicit Texture(Framebuffer image);
+    // The same with the image's alpha, one byte a texel in the same order: kept only where some
+    // texel is below 255, so that an opaque texture pays nothing (doc/conventions.md#transparency).
+    Texture(Framebuffer image, std::vector<std::uint8_t> alpha);
     // Adopts a whole mip chain as level() gives one (each level half the one before, at least 1,
     // down to 1 x 1), so that a chain built elsewhere is not built again; throws
     // std::invalid_argument for any other chain.
-    [[nodiscard]] static Texture from_levels(std::vector<Framebuffer> levels);
+    // `alpha`: level 0's alpha plane as alpha_plane() gives it (empty: none).
+    [[nodiscard]] static Texture from_levels(std::vector<Framebuffer> levels, std::vector<std::uint8_t> alpha = {});
 
     [[nodiscard]] int width() const noexcept { return levels_.front().width(); }
     [[nodiscard]] int height() const noexcept { return levels_.front().height(); }
     // Level 0 is the image; each next level halves both sides (at least 1) down to 1 x 1.
     [[nodiscard]] std::size_t level_count() const noexcept { return levels_.size(); }
     [[nodiscard]] const Framebuffer& level(std::size_t index) const { return levels_.at(index); }
+    [[nodiscard]] bool has_alpha() const noexcept { return !alpha_.empty(); }
+    [[nodiscard]] const std::vector<std::uint8_t>& alpha_plane() const noexcept { return alpha_; }
+    // The alpha of the image's texel under (u, v), 0..1; 1 for a texture without alpha.
+    [[nodiscard]] float alpha(glm::vec2 uv, TextureWrap wrap) const noexcept;
 
     // The colour at (u, v) in linear light; never NaN, whatever u and v are.
     [[nodiscard]] LinearRgb sample(glm::vec2 uv, const UvFootprint& footprint, Sampler sampler) const noexcept;
@@ -72,6 +81,7 @@ private:
 
     std::vector<Framebuffer> levels_;
     std::array<float, 256> linear_from_byte_{};
+    std::vector<std::uint8_t> alpha_;  // of level 0; empty when every texel is opaque
 };
 
 }  // namespace raster

@@ -1,6 +1,7 @@
 #include "io/assimp/scene_model.hpp"
 
 #include "geometry/polygon_triangles.hpp"
+#include "io/assimp/material_alpha.hpp"
 #include "io/gltf_structure.hpp"
 #include "io/model_builder.hpp"
 #include "io/named_path.hpp"
@@ -293,6 +294,8 @@ void model_from_scene(const aiScene& scene, const std::filesystem::path& path, c
                 const aiString material_name = scene.mMaterials[id]->GetName();
                 part.material_name = material_name.C_Str();
                 part.material = materials[static_cast<std::size_t>(id)].first;
+                part.opacity = opacity_of(*scene.mMaterials[id],
+                                          name + ": material '" + printable(part.material_name) + "'", model.warnings);
                 if (!part.mesh.uvs.empty()) part.texture = materials[static_cast<std::size_t>(id)].second;
             }
             model.parts.push_back(std::move(part));

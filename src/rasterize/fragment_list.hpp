@@ -1,0 +1,56 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+// The fragments of transparent surfaces that fell in one strip of rows, kept whole until the
+// strip resolves (doc/conventions.md#transparency): in chunks that never move, so that the
+// colour a shader is yet to write keeps its address while later fragments are added.
+namespace raster::detail {
+
+struct Fragment {
+    float depth;             // view depth, compared with the opaque samples' as they are
+    float alpha;             // 0..1
+    std::uint32_t pixel;     // y * width + x in the frame
+    std::uint16_t samples;   // the samples it covers and is in front of (bit 0 alone at one sample)
+    std::uint8_t colour[3];  // sRGB, as the shader wrote it
+};
+
+// The most memory a frame's fragments may take; a strip may hold its share by pixels.
+constexpr std::size_t kMaxFragmentBytes = std::size_t{1} << 30;
+
+class FragmentList {
+public:
+    // `cap`: the most fragments this strip keeps; one more is refused with std::length_error.
+    explicit FragmentList(std::size_t cap = 0) noexcept : cap_(cap) {}
+
+    Fragment& add(float depth, float alpha, std::uint32_t pixel, std::uint16_t samples) {
+        if (size_ >= cap_) {
+            throw std::length_error("the transparent surfaces of this frame overlap in more than " +
+                                    std::to_string(kMaxFragmentBytes >> 20) +
+                                    " MiB of fragments; draw it smaller or with fewer samples");
+        }
+        if (size_ % kChunk == 0 && size_ / kChunk == chunks_.size())
+            chunks_.push_back(std::make_unique<Fragment[]>(kChunk));
+        Fragment& added = (*this)[size_++];
+        added = {depth, alpha, pixel, samples, {0, 0, 0}};
+        return added;
+    }
+    [[nodiscard]] std::size_t size() const noexcept { return size_; }
+    [[nodiscard]] bool empty() const noexcept { return size_ == 0; }
+    [[nodiscard]] Fragment& operator[](std::size_t i) noexcept { return chunks_[i / kChunk][i % kChunk]; }
+    // Forgets the fragments, keeping their memory for the next frame.
+    void clear() noexcept { size_ = 0; }
+
+private:
+    static constexpr std::size_t kChunk = 4096;
+    std::size_t cap_;
+    std::size_t size_ = 0;
+    std::vector<std::unique_ptr<Fragment[]>> chunks_;
+};
+
+}  // namespace raster::detail
