@@ -70,6 +70,16 @@ void add_render_options(CLI::App& app, RenderArguments& arguments) {
                    "Distance to the far clipping plane, in model units. Default: just beyond the model")
         ->check(finite_number(0.0, HUGE_VAL, true))
         ->option_text("DISTANCE");
+    app.add_option("--point-size", view.points_and_lines.point_size,
+                   "Diameter of each point (a point cloud, OBJ p, PLY vertices without faces, glTF POINTS), in pixels, "
+                   "1 to 64. Default: from the points' density on screen, so that a scan reads as a surface")
+        ->check(finite_number(raster::kMinPointSize, raster::kMaxPointSize, false, " pixels"))
+        ->option_text("PX");
+    app.add_option("--line-width", view.points_and_lines.line_width,
+                   "Width of each line (OBJ l, glTF LINES and strips), in pixels, 0.5 to 64; anti-aliased by "
+                   "--samples [1.5]")
+        ->check(finite_number(raster::kMinLineWidth, raster::kMaxLineWidth, false, " pixels"))
+        ->option_text("PX");
     add_integer_option(app, "--turntable", plan.frames, 0, 10000,
                        "Write an animation of this many frames, 1..10000, turning the model once about --up");
     add_animation_options(app, plan.fps, options);

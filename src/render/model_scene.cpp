@@ -49,6 +49,7 @@ constexpr double kNearest = 1e-18, kFarthest = 1e18;
 
 ModelStage::ModelStage(std::shared_ptr<const Model> model, const ModelView& view, int width, int height)
     : model_(std::move(model)), shading_(view.shading) {
+    check_points_and_lines(view.points_and_lines);  // refused before the model is framed
     if (!model_) throw std::invalid_argument("no model to stage");
     const Bounds bounds = bounds_of(*model_);
     const double radius = bounds.radius;
@@ -120,6 +121,7 @@ ModelStage::ModelStage(std::shared_ptr<const Model> model, const ModelView& view
                               {},
                               {},
                               view.transparent};
+        orthographic_->points_and_lines = view.points_and_lines;
         return;
     }
     if (view.near && view.far && !(*view.near < *view.far)) {
@@ -153,6 +155,7 @@ ModelStage::ModelStage(std::shared_ptr<const Model> model, const ModelView& view
         {},
         {},
         view.transparent};
+    perspective_->points_and_lines = view.points_and_lines;
 }
 
 std::vector<SceneObject> ModelStage::objects(double turn) const {

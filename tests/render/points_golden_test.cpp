@@ -5,6 +5,7 @@
 
 #include "support/golden.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <memory>

@@ -33,6 +33,8 @@ struct ModelView {
     // pixels drawn can be read afterwards (Renderer::coverage).
     bool transparent = false;
     Culling cull = Culling::automatic;
+    // How the model's points and lines are drawn: splat size (default from their density) and line width.
+    PointsAndLines points_and_lines{};
 };
 
 // A model placed for viewing, frame after frame.
