@@ -29,13 +29,9 @@ public:
     explicit FragmentList(std::size_t cap = 0) noexcept : cap_(cap) {}
 
     Fragment& add(float depth, float alpha, std::uint32_t pixel, std::uint16_t samples) {
-        if (size_ >= cap_) {
-            throw std::length_error("the transparent surfaces of this frame overlap in more than " +
-                                    std::to_string(kMaxFragmentBytes >> 20) +
-                                    " MiB of fragments; draw it smaller or with fewer samples");
-        }
+        if (size_ >= cap_) refuse();
         if (size_ % kChunk == 0 && size_ / kChunk == chunks_.size())
-            chunks_.push_back(std::make_unique<Fragment[]>(kChunk));
+            chunks_.push_back(std::make_unique_for_overwrite<Fragment[]>(kChunk));  // each written before it is read
         Fragment& added = (*this)[size_++];
         added = {depth, alpha, pixel, samples, {0, 0, 0}};
         return added;
@@ -47,6 +43,12 @@ public:
     void clear() noexcept { size_ = 0; }
 
 private:
+    [[noreturn, gnu::cold, gnu::noinline]] static void refuse() {
+        throw std::length_error("the transparent surfaces of this frame overlap in more than " +
+                                std::to_string(kMaxFragmentBytes >> 20) +
+                                " MiB of fragments; draw it smaller or with fewer samples");
+    }
+
     static constexpr std::size_t kChunk = 4096;
     std::size_t cap_;
     std::size_t size_ = 0;

@@ -82,6 +82,7 @@ void gather_triangle(FragmentList* list, OpaqueDepths opaque, int frame_width,
     std::array<double, kMaxSamples> at_a{}, at_b{};
     std::array<float, kMaxSamples> at_z{};
     coverage.rows(rows, [&](int y, int begin, int end, int inner_begin, int inner_end) {
+        float* const depth_row = opaque.samples == nullptr && opaque.depth != nullptr ? opaque.depth->row(y) : nullptr;
         for (int x = begin; x < end; ++x) {
             const std::uint32_t covered = x >= inner_begin && x < inner_end ? all : coverage.at(x, y);
             if (covered == 0) continue;
@@ -90,8 +91,8 @@ void gather_triangle(FragmentList* list, OpaqueDepths opaque, int frame_width,
             if (opaque.samples != nullptr) {
                 opaque.samples->touch(x, y);  // its samples read as the background until drawn on
                 nearest = opaque.samples->depths(x, y);
-            } else if (opaque.depth != nullptr) {
-                nearest = opaque.depth->row(y) + x;
+            } else if (depth_row != nullptr) {
+                nearest = depth_row + x;
             }
             std::uint32_t passed = 0;
             for (int s = 0; s < count; ++s) {
