@@ -130,9 +130,10 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
         }
     }
     std::size_t drawn = 0;
+    const std::shared_ptr<const Surroundings> surroundings = surroundings_for(scene);
     for (const SceneObject& object : scene.objects) {
         if (!object.mesh) continue;  // an object without a mesh shows nothing
-        drawn += draw_shaded(object, scene.lights, scene.point_lights, to_eye, eye, scene.darkening,
+        drawn += draw_shaded(object, scene.lights, scene.point_lights, to_eye, eye, scene.darkening, surroundings.get(),
                              [&](const auto& shader) { return draw_object(object, shader); });
     }
     if (!cleared) {

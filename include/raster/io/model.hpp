@@ -3,10 +3,12 @@
 #include <raster/geometry/mesh.hpp>
 #include <raster/io/input_file.hpp>
 #include <raster/shade/linear_lighting.hpp>
+#include <raster/shade/metallic_roughness.hpp>
 #include <raster/shade/texture.hpp>
 
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 #include <glm/vec3.hpp>
@@ -20,6 +22,9 @@ struct ModelPart {
     LinearMaterial material;
     std::shared_ptr<const Texture> texture{};  // the diffuse map, when it loaded
     Sampler sampler{};
+    // A physically based material (glTF's, or an MTL's PBR fields), drawn in place of `material`
+    // and `texture` when present (doc/conventions.md#metallic-roughness).
+    std::optional<MetallicRoughness> metallic_roughness{};
 };
 
 struct Model {
