@@ -190,7 +190,8 @@ int main(int argc, char** argv) {
        << "reference integrated in double on 1500 x 360 half vectors. Directional light: worst relative error "
        << worst_directional * 100.0 << " % over 16 light angles per case. Studio surroundings prefiltered in "
        << studio_ms << " ms. A pixel of metallic-roughness (two lights and the studio, one pixel at a time) costs "
-       << pbr_ns << " ns against Phong's " << phong_ns << " ns (scalar, without its SIMD lanes).\n\n| method | ns per pixel | mean error, % of energy | worst, % | setup ms |\n|---|---|---|---|---|\n";
+       << pbr_ns << " ns against Phong's " << phong_ns
+       << " ns (scalar, without its SIMD lanes).\n\n| method | ns per pixel | mean error, % of energy | worst, % | setup ms |\n|---|---|---|---|---|\n";
     for (const Method& m : methods) {
         double sum = 0.0, worst = 0.0;
         Case worst_case{};
