@@ -4,6 +4,7 @@
 
 #include <raster/image/framebuffer.hpp>
 
+#include <array>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -58,6 +59,14 @@ Mesh read_mesh(WireReader& in) {
     return mesh;
 }
 
+// A physically based material's maps, in the order the wire carries them.
+std::array<const std::shared_ptr<const Texture>*, 5> maps_of(const MetallicRoughness& m) {
+    return {&m.base_colour_map, &m.metallic_roughness_map, &m.normal_map, &m.occlusion_map, &m.emissive_map};
+}
+std::array<std::shared_ptr<const Texture>*, 5> maps_of(MetallicRoughness& m) {
+    return {&m.base_colour_map, &m.metallic_roughness_map, &m.normal_map, &m.occlusion_map, &m.emissive_map};
+}
+
 }  // namespace
 
 std::size_t model_wire_size(const Model& model) noexcept {
@@ -69,9 +78,16 @@ std::size_t model_wire_size(const Model& model) noexcept {
                 m.normals.size() * sizeof(glm::vec3) + m.facets.size() * sizeof(Facet) +
                 m.uvs.size() * sizeof(glm::vec2) + m.colours.size() * sizeof(LinearRgb) +
                 m.points.size() * sizeof(std::uint32_t) + m.segments.size() * sizeof(m.segments[0]);
-        if (part.texture && counted.emplace(part.texture.get(), true).second)
-            size += 64 + part.texture->level(0).bytes().size() * 4 / 3 + 64 * part.texture->level_count() +
-                    part.texture->alpha_plane().size();
+        const auto count = [&](const std::shared_ptr<const Texture>& texture) {
+            if (texture && counted.emplace(texture.get(), true).second)
+                size += 64 + texture->level(0).bytes().size() * 4 / 3 + 64 * texture->level_count() +
+                        texture->alpha_plane().size();
+        };
+        count(part.texture);
+        if (part.metallic_roughness) {
+            size += 128;
+            for (const auto* map : maps_of(*part.metallic_roughness)) count(*map);
+        }
     }
     for (const std::string& warning : model.warnings) size += 8 + warning.size();
     for (const InputRecord& source : model.sources) size += 64 + source.path.native().size() + source.role.size();
@@ -83,13 +99,19 @@ void append_model_wire(const Model& model, std::vector<std::uint8_t>& out) {
     wire.value(kWireMark);
     std::map<const Texture*, std::uint32_t> numbers;
     std::vector<const Texture*> textures;
+    const auto number = [&](const std::shared_ptr<const Texture>& texture) {
+        if (texture && numbers.emplace(texture.get(), static_cast<std::uint32_t>(textures.size())).second)
+            textures.push_back(texture.get());
+    };
     for (const ModelPart& part : model.parts) {
-        if (part.texture && numbers.emplace(part.texture.get(), static_cast<std::uint32_t>(textures.size())).second) {
-            textures.push_back(part.texture.get());
+        number(part.texture);
+        if (part.metallic_roughness) {
+            for (const auto* map : maps_of(*part.metallic_roughness)) number(*map);
         }
     }
     wire.value(static_cast<std::uint64_t>(textures.size()));
     for (const Texture* texture : textures) {  // every level: the chain is not built twice
+        wire.value(static_cast<std::uint8_t>(texture->encoding()));
         wire.value(static_cast<std::uint64_t>(texture->level_count()));
         for (std::size_t level = 0; level < texture->level_count(); ++level) {
             const Framebuffer& image = texture->level(level);
@@ -114,6 +136,15 @@ void append_model_wire(const Model& model, std::vector<std::uint8_t>& out) {
         wire.value(static_cast<std::uint8_t>(part.opacity.mode));
         wire.value(part.opacity.factor);
         wire.value(part.opacity.cutoff);
+        wire.value(static_cast<std::uint8_t>(part.metallic_roughness.has_value()));
+        if (part.metallic_roughness) {
+            const MetallicRoughness& m = *part.metallic_roughness;
+            wire.value(m.base_colour);
+            wire.value(m.emissive);
+            for (const float factor : {m.metallic, m.roughness, m.occlusion_strength, m.normal_scale})
+                wire.value(factor);
+            for (const auto* map : maps_of(m)) wire.value(*map ? numbers.at(map->get()) : UINT32_MAX);
+        }
     }
     wire.value(static_cast<std::uint64_t>(model.warnings.size()));
     for (const std::string& warning : model.warnings) wire.text(warning);
@@ -132,6 +163,8 @@ Model model_from_wire(std::span<const std::uint8_t> bytes) {
     if (texture_count > bytes.size()) WireReader::broken();
     std::vector<std::shared_ptr<const Texture>> textures(static_cast<std::size_t>(texture_count));
     for (auto& texture : textures) {
+        const auto encoding = wire.value<std::uint8_t>();
+        if (encoding > static_cast<std::uint8_t>(TexelEncoding::linear)) WireReader::broken();
         const auto count = wire.value<std::uint64_t>();
         if (count == 0 || count > 64) WireReader::broken();
         std::vector<Framebuffer> levels;
@@ -146,7 +179,8 @@ Model model_from_wire(std::span<const std::uint8_t> bytes) {
         }
         std::vector<std::uint8_t> alpha = wire.array<std::uint8_t>();
         try {
-            texture = std::make_shared<const Texture>(Texture::from_levels(std::move(levels), std::move(alpha)));
+            texture = std::make_shared<const Texture>(Texture::from_levels(
+                std::move(levels), static_cast<TexelEncoding>(encoding), std::move(alpha)));
         } catch (const std::invalid_argument&) {
             WireReader::broken();
         }
@@ -180,6 +214,19 @@ Model model_from_wire(std::span<const std::uint8_t> bytes) {
         if (mode > static_cast<std::uint8_t>(AlphaMode::blend) || !unit(part.opacity.factor) ||
             !unit(part.opacity.cutoff))
             WireReader::broken();
+        if (wire.value<std::uint8_t>() != 0) {
+            MetallicRoughness& m = part.metallic_roughness.emplace();
+            m.base_colour = wire.value<LinearRgb>();
+            m.emissive = wire.value<LinearRgb>();
+            for (float* factor : {&m.metallic, &m.roughness, &m.occlusion_strength, &m.normal_scale})
+                *factor = wire.value<float>();
+            for (auto* map : maps_of(m)) {
+                const auto at = wire.value<std::uint32_t>();
+                if (at == UINT32_MAX) continue;
+                if (at >= textures.size()) WireReader::broken();
+                *map = textures[at];
+            }
+        }
         model.parts.push_back(std::move(part));
     }
     const auto warnings = wire.value<std::uint64_t>();

@@ -218,7 +218,8 @@ DetailPlan plan_detail(std::span<const Scene> samples) {
     for (const Scene& frame : samples) {
         for (std::size_t i = 0; i < objects && i < frame.objects.size(); ++i) {
             const SceneObject& object = frame.objects[i];
-            if (!object.shape) continue;
+            // Metallic-roughness is shaded per pixel: no cheaper method to choose.
+            if (!object.shape || std::holds_alternative<MetallicRoughness>(object.material)) continue;
             const auto* intensity = std::get_if<IntensityMaterial>(&object.material);
             const DetailChoice choice =
                 intensity != nullptr

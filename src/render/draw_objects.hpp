@@ -166,9 +166,10 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
         }
     }
     std::size_t drawn = 0;
+    const std::shared_ptr<const Surroundings> surroundings = surroundings_for(scene);
     for (const SceneObject& object : scene.objects) {
         if (!object.mesh || blends(object.opacity) || !shows(object.opacity)) continue;  // blended below
-        drawn += draw_shaded(object, scene.lights, scene.point_lights, to_eye, eye, scene.darkening,
+        drawn += draw_shaded(object, scene.lights, scene.point_lights, to_eye, eye, scene.darkening, surroundings.get(),
                              [&](const auto& shader) { return draw_object(object, shader); });
     }
     if (!cleared) {
@@ -187,7 +188,7 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
         for (const SceneObject& object : scene.objects) {
             if (!object.mesh || !blends(object.opacity)) continue;
             drawn += draw_shaded(object, scene.lights, scene.point_lights, to_eye, eye, scene.darkening,
-                                 [&](const auto& shader) { return draw_object(object, shader); });
+                                 surroundings.get(), [&](const auto& shader) { return draw_object(object, shader); });
         }
     }
     if (samples != nullptr) {

@@ -109,6 +109,10 @@ ModelStage::ModelStage(std::shared_ptr<const Model> model, const ModelView& view
     lights.push_back({glm::vec3(glm::normalize(key)), 0.85F});
     // A dim fill from the other side, so that no face is left black.
     lights.push_back({glm::vec3(glm::normalize(-glm::normalize(key) + 0.3 * -forward)), 0.3F});
+    // Prefiltered once for every frame, and only for a model whose materials reflect it.
+    const bool reflects = std::any_of(model_->parts.begin(), model_->parts.end(),
+                                      [](const ModelPart& part) { return part.metallic_roughness.has_value(); });
+    const auto surroundings = reflects ? std::make_shared<const Surroundings>(Surroundings::studio()) : nullptr;
 
     if (view.orthographic) {
         if (view.near || view.far)
@@ -120,8 +124,9 @@ ModelStage::ModelStage(std::shared_ptr<const Model> model, const ModelView& view
                               {},
                               {},
                               {},
-                              view.transparent};
-        orthographic_->points_and_lines = view.points_and_lines;
+                              view.transparent,
+                              view.points_and_lines,
+                              surroundings};
         return;
     }
     if (view.near && view.far && !(*view.near < *view.far)) {
@@ -154,8 +159,9 @@ ModelStage::ModelStage(std::shared_ptr<const Model> model, const ModelView& view
         {},
         {},
         {},
-        view.transparent};
-    perspective_->points_and_lines = view.points_and_lines;
+        view.transparent,
+        view.points_and_lines,
+        surroundings};
 }
 
 std::vector<SceneObject> ModelStage::objects(double turn) const {
@@ -164,8 +170,10 @@ std::vector<SceneObject> ModelStage::objects(double turn) const {
     std::vector<SceneObject> objects;
     for (std::size_t i = 0; i < meshes_.size(); ++i) {
         const ModelPart& part = model_->parts[i];
+        const SurfaceMaterial material =
+            part.metallic_roughness ? SurfaceMaterial{*part.metallic_roughness} : SurfaceMaterial{part.material};
         objects.push_back(
-            {meshes_[i], turned, part.material, shading_, std::nullopt, part.texture, part.sampler, part.opacity});
+            {meshes_[i], turned, material, shading_, std::nullopt, part.texture, part.sampler, part.opacity});
     }
     return objects;
 }
@@ -202,6 +210,7 @@ std::vector<std::string> replace_diffuse_maps(Model& model, const std::shared_pt
             continue;
         }
         part.texture = texture;
+        if (part.metallic_roughness) part.metallic_roughness->base_colour_map = texture;
         // A map given to a model without materials shows as it is, not dimmed by the default grey.
         if (part.material_name.empty()) part.material.diffuse = LinearRgb{1.0F, 1.0F, 1.0F};
     }

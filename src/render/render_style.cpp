@@ -35,6 +35,11 @@ BasicScene<Camera> flattened(BasicScene<Camera> scene) {
 
 Rgb line_colour(const SceneObject& object) {
     if (const auto* material = std::get_if<IntensityMaterial>(&object.material)) return material->base;
+    if (const auto* pbr = std::get_if<MetallicRoughness>(&object.material)) {
+        const MetallicRoughness usable = pbr->usable();
+        const LinearRgb mean = pbr->base_colour_map ? mean_colour(*pbr->base_colour_map) : LinearRgb{1.0F, 1.0F, 1.0F};
+        return srgb_from_linear(usable.emissive + usable.base_colour * mean);
+    }
     const auto& material = std::get<LinearMaterial>(object.material);
     const LinearRgb mean = object.texture ? mean_colour(*object.texture) : LinearRgb{1.0F, 1.0F, 1.0F};
     return srgb_from_linear(LinearRgb{material.emissive.r + material.diffuse.r * mean.r,

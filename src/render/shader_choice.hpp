@@ -1,9 +1,12 @@
 #pragma once
 
 #include <raster/render/scene.hpp>
+#include <raster/shade/metallic_roughness_shaders.hpp>
 #include <raster/shade/shaders.hpp>
 #include <raster/shade/textured_shaders.hpp>
 
+#include <algorithm>
+#include <memory>
 #include <optional>
 #include <span>
 #include <variant>
@@ -12,12 +15,34 @@
 // texture and vertex colours.
 namespace raster::detail {
 
+// The surroundings a frame's metallic-roughness objects reflect: the scene's, else the built-in
+// studio prefiltered once for the frame; none when no object needs them.
+template <typename Camera>
+std::shared_ptr<const Surroundings> surroundings_for(const BasicScene<Camera>& scene) {
+    if (scene.surroundings) return scene.surroundings;
+    const bool needed = std::any_of(scene.objects.begin(), scene.objects.end(), [](const SceneObject& object) {
+        return object.mesh && std::holds_alternative<MetallicRoughness>(object.material);
+    });
+    return needed ? std::make_shared<const Surroundings>(Surroundings::studio()) : nullptr;
+}
+
 // Lights one object by its material and hands `draw` the shader its shading method asks for.
 // `eye` is the viewer's position in perspective; orthographic views have `to_eye` alone.
 template <typename Draw>
 std::size_t draw_shaded(const SceneObject& object, std::span<const DirectionalLight> lights,
                         std::span<const PointLight> points, glm::vec3 to_eye, std::optional<glm::vec3> eye,
-                        std::optional<DepthDarkening> darkening, Draw draw) {
+                        std::optional<DepthDarkening> darkening, const Surroundings* surroundings, Draw draw) {
+    if (const auto* pbr = std::get_if<MetallicRoughness>(&object.material)) {
+        // Shaded per pixel whatever the method asks, but flat takes the facet's normal; unlit draws the base colour.
+        if (object.shading == ShadingMethod::unlit) {
+            const DiffuseSource base{pbr->usable().base_colour, pbr->base_colour_map.get(), object.sampler};
+            if (!object.mesh->colours.empty()) return draw(TintedUnlitShader{base});
+            return draw(UnlitShader{base});
+        }
+        const MetallicRoughnessLighting lighting(*pbr, object.sampler, surroundings, lights, points, to_eye, eye);
+        if (object.shading == ShadingMethod::flat) return draw(MetallicRoughnessFlatShader{&lighting});
+        return draw(MetallicRoughnessPhongShader{&lighting});
+    }
     if (const auto* intensity = std::get_if<IntensityMaterial>(&object.material)) {
         // The intensity model has one viewer direction, the camera's, even in perspective.
         const IntensityLighting lighting(*intensity, lights, to_eye);

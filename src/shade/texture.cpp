@@ -18,7 +18,7 @@ using detail::wrapped_index;
 // The next mip level: each texel the mean, in linear light, of the 2 x 2 texels it covers (one
 // row or column where a side is already 1 texel); an odd side's last row or column is left out,
 // as a plain box filter does.
-Framebuffer halved(const Framebuffer& level, const std::array<float, 256>& linear) {
+Framebuffer halved(const Framebuffer& level, const std::array<float, 256>& linear, TexelEncoding encoding) {
     const int width = std::max(1, level.width() / 2), height = std::max(1, level.height() / 2);
     Framebuffer next(width, height);
     const std::uint8_t* in = level.bytes().data();
@@ -33,7 +33,9 @@ Framebuffer halved(const Framebuffer& level, const std::array<float, 256>& linea
                     return linear[in[static_cast<std::size_t>(j) * row_bytes + static_cast<std::size_t>(i) * 3 + c]];
                 };
                 const float mean = (at(x0, y0) + at(x1, y0) + at(x0, y1) + at(x1, y1)) * 0.25F;
-                *out++ = srgb_byte_from_linear(mean);
+                *out++ = encoding == TexelEncoding::srgb
+                             ? srgb_byte_from_linear(mean)
+                             : static_cast<std::uint8_t>(std::lround(std::clamp(mean, 0.0F, 1.0F) * 255.0F));
             }
         }
     }
@@ -42,16 +44,18 @@ Framebuffer halved(const Framebuffer& level, const std::array<float, 256>& linea
 
 }  // namespace
 
-Texture::Texture() noexcept {
+Texture::Texture(TexelEncoding encoding) noexcept : encoding_(encoding) {
     for (std::size_t i = 0; i < linear_from_byte_.size(); ++i) {
-        linear_from_byte_[i] = static_cast<float>(linear_from_srgb_channel(static_cast<double>(i) / 255.0));
+        const double byte = static_cast<double>(i) / 255.0;
+        linear_from_byte_[i] =
+            static_cast<float>(encoding == TexelEncoding::srgb ? linear_from_srgb_channel(byte) : byte);
     }
 }
 
-Texture::Texture(Framebuffer image) : Texture() {
+Texture::Texture(Framebuffer image, TexelEncoding encoding) : Texture(encoding) {
     levels_.push_back(std::move(image));
     while (levels_.back().width() > 1 || levels_.back().height() > 1)
-        levels_.push_back(halved(levels_.back(), linear_from_byte_));
+        levels_.push_back(halved(levels_.back(), linear_from_byte_, encoding_));
 }
 
 Texture::Texture(Framebuffer image, std::vector<std::uint8_t> alpha) : Texture(std::move(image)) {
@@ -71,7 +75,7 @@ float Texture::alpha(glm::vec2 uv, TextureWrap wrap) const noexcept {
            255.0F;
 }
 
-Texture Texture::from_levels(std::vector<Framebuffer> levels, std::vector<std::uint8_t> alpha) {
+Texture Texture::from_levels(std::vector<Framebuffer> levels, TexelEncoding encoding, std::vector<std::uint8_t> alpha) {
     for (std::size_t i = 1; i < levels.size(); ++i) {
         if (levels[i].width() != std::max(1, levels[i - 1].width() / 2) ||
             levels[i].height() != std::max(1, levels[i - 1].height() / 2)) {
@@ -80,7 +84,7 @@ Texture Texture::from_levels(std::vector<Framebuffer> levels, std::vector<std::u
     }
     if (levels.empty() || levels.back().width() != 1 || levels.back().height() != 1)
         throw std::invalid_argument("a mip chain must end at 1 x 1");
-    Texture texture;
+    Texture texture(encoding);
     texture.levels_ = std::move(levels);
     const std::size_t texels = static_cast<std::size_t>(texture.width()) * static_cast<std::size_t>(texture.height());
     if (!alpha.empty() && alpha.size() != texels)

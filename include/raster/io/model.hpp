@@ -4,10 +4,12 @@
 #include <raster/io/input_file.hpp>
 #include <raster/shade/linear_lighting.hpp>
 #include <raster/shade/opacity.hpp>
+#include <raster/shade/metallic_roughness.hpp>
 #include <raster/shade/texture.hpp>
 
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 #include <glm/vec3.hpp>
@@ -22,6 +24,9 @@ struct ModelPart {
     std::shared_ptr<const Texture> texture{};  // the diffuse map, when it loaded
     Sampler sampler{};
     Opacity opacity{};  // from MTL d and Tr, glTF alphaMode and base colour alpha
+    // A physically based material (glTF's, or an MTL's PBR fields), drawn in place of `material`
+    // and `texture` when present (doc/conventions.md#metallic-roughness).
+    std::optional<MetallicRoughness> metallic_roughness{};
 };
 
 struct Model {

@@ -9,6 +9,8 @@
 #include <raster/shade/intensity_lighting.hpp>
 #include <raster/shade/linear_lighting.hpp>
 #include <raster/shade/opacity.hpp>
+#include <raster/shade/metallic_roughness.hpp>
+#include <raster/shade/surroundings.hpp>
 #include <raster/shade/texture.hpp>
 
 #include <cstdint>
@@ -25,9 +27,9 @@ namespace raster {
 // all, its diffuse colour (or texture) as it is.
 enum class ShadingMethod { flat, gouraud, phong, unlit };
 
-// How a surface takes light: an intensity on 8-bit colour, or material colours in linear light
-// (doc/conventions.md#light).
-using SurfaceMaterial = std::variant<IntensityMaterial, LinearMaterial>;
+// How a surface takes light: an intensity on 8-bit colour, material colours in linear light
+// (doc/conventions.md#light), or glTF's metallic-roughness (doc/conventions.md#metallic-roughness).
+using SurfaceMaterial = std::variant<IntensityMaterial, LinearMaterial, MetallicRoughness>;
 
 // A mesh placed in the world with its surface; one without a mesh draws nothing.
 struct SceneObject {
@@ -78,6 +80,9 @@ struct BasicScene {
     // a transparent background: Renderer::coverage (or, at one sample, DepthBuffer::coverage).
     bool keep_depth = false;
     PointsAndLines points_and_lines{};
+    // The light around the scene that metallic-roughness surfaces reflect; none given, the
+    // built-in studio (Surroundings::studio()), prefiltered for each frame that needs it.
+    std::shared_ptr<const Surroundings> surroundings{};
 };
 using Scene = BasicScene<OrthoCamera>;
 using PerspectiveScene = BasicScene<PerspectiveCamera>;

@@ -11,7 +11,8 @@
 #include <glm/vec2.hpp>
 
 // Colour textures: sRGB texels decoded to linear light before they are filtered, as a GPU's
-// SRGB8 formats do, with a mip chain averaged in linear light (doc/conventions.md#textures).
+// SRGB8 formats do, with a mip chain averaged in linear light (doc/conventions.md#textures);
+// data maps (normals, metal and roughness, occlusion) read their bytes as they are, byte / 255.
 namespace raster {
 
 // What happens outside [0, 1]: the image tiles, or its edge texels stretch on.
@@ -19,6 +20,9 @@ enum class TextureWrap { repeat, clamp };
 // How texels become a colour: the texel under the point, a blend of the four nearest, or that
 // blend on the two mip levels whose texel size is nearest the pixel's footprint, blended again.
 enum class TextureFilter { nearest, bilinear, trilinear };
+
+// How a texel's bytes stand for values: sRGB-encoded colour, or linear data (byte / 255).
+enum class TexelEncoding { srgb, linear };
 
 struct Sampler {
     TextureFilter filter = TextureFilter::trilinear;
@@ -44,7 +48,7 @@ struct LaneUvs {
 class Texture {
 public:
     // Adopts an image whose row 0 is its top row, its bytes sRGB-encoded; builds the mip chain.
-    explicit Texture(Framebuffer image);
+    explicit Texture(Framebuffer image, TexelEncoding encoding = TexelEncoding::srgb);
     // The same with the image's alpha, one byte a texel in the same order: kept only where some
     // texel is below 255, so that an opaque texture pays nothing (doc/conventions.md#transparency).
     Texture(Framebuffer image, std::vector<std::uint8_t> alpha);
@@ -52,7 +56,10 @@ public:
     // down to 1 x 1), so that a chain built elsewhere is not built again; throws
     // std::invalid_argument for any other chain.
     // `alpha`: level 0's alpha plane as alpha_plane() gives it (empty: none).
-    [[nodiscard]] static Texture from_levels(std::vector<Framebuffer> levels, std::vector<std::uint8_t> alpha = {});
+    [[nodiscard]] static Texture from_levels(std::vector<Framebuffer> levels,
+                                             TexelEncoding encoding = TexelEncoding::srgb,
+                                             std::vector<std::uint8_t> alpha = {});
+    [[nodiscard]] TexelEncoding encoding() const noexcept { return encoding_; }
 
     [[nodiscard]] int width() const noexcept { return levels_.front().width(); }
     [[nodiscard]] int height() const noexcept { return levels_.front().height(); }
@@ -71,7 +78,7 @@ public:
     void sample_lanes(const LaneUvs& at, Sampler sampler, LaneRgb& out, int count) const noexcept;
 
 private:
-    Texture() noexcept;
+    explicit Texture(TexelEncoding encoding) noexcept;
     [[nodiscard]] LinearRgb texel(const Framebuffer& level, int x, int y) const noexcept;
     [[nodiscard]] LinearRgb nearest(const Framebuffer& level, glm::vec2 uv, TextureWrap wrap) const noexcept;
     [[nodiscard]] LinearRgb bilinear(const Framebuffer& level, glm::vec2 uv, TextureWrap wrap) const noexcept;
@@ -82,6 +89,7 @@ private:
     std::vector<Framebuffer> levels_;
     std::array<float, 256> linear_from_byte_{};
     std::vector<std::uint8_t> alpha_;  // of level 0; empty when every texel is opaque
+    TexelEncoding encoding_ = TexelEncoding::srgb;
 };
 
 }  // namespace raster

@@ -2,6 +2,7 @@
 
 #include "geometry/polygon_triangles.hpp"
 #include "io/assimp/material_alpha.hpp"
+#include "io/assimp/gltf_material.hpp"
 #include "io/gltf_structure.hpp"
 #include "io/model_builder.hpp"
 #include "io/named_path.hpp"
@@ -39,30 +40,6 @@ glm::dmat4 matrix_of(const aiMatrix4x4& m) {
 
 bool finite(const aiVector3D& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-// A glTF metallic-roughness material as raster's Phong (doc/conventions.md#models): the base
-// colour is diffuse as far as the surface is not metal; the highlight is 4 % white for a
-// dielectric and the base colour for a metal, as sharp as the roughness allows.
-LinearMaterial material_from(const aiMaterial& m) {
-    aiColor4D base(0.8F, 0.8F, 0.8F, 1.0F);
-    if (m.Get(AI_MATKEY_BASE_COLOR, base) != AI_SUCCESS) m.Get(AI_MATKEY_COLOR_DIFFUSE, base);
-    float metallic = 0.0F, roughness = 1.0F;
-    const bool pbr = m.Get(AI_MATKEY_METALLIC_FACTOR, metallic) == AI_SUCCESS;
-    if (pbr) m.Get(AI_MATKEY_ROUGHNESS_FACTOR, roughness);
-    const auto usable = [](float v, float fallback) { return std::isfinite(v) ? std::clamp(v, 0.0F, 1.0F) : fallback; };
-    metallic = usable(metallic, 0.0F);
-    roughness = usable(roughness, 1.0F);
-    const LinearRgb colour{std::max(0.0F, usable(base.r, 0.8F)), std::max(0.0F, usable(base.g, 0.8F)),
-                           std::max(0.0F, usable(base.b, 0.8F))};
-    LinearMaterial material{LinearRgb{}, colour * (1.0F - metallic), LinearRgb{}, std::nullopt};
-    const float alpha = roughness * roughness;
-    if (pbr && alpha < 0.95F) {
-        const float f0 = 0.04F * (1.0F - metallic);
-        material.specular = LinearRgb{f0, f0, f0} + colour * metallic;
-        material.shininess = std::min(2.0F / std::max(alpha * alpha, 1e-4F) - 2.0F, 2048.0F);
-    }
-    return material;
-}
-
 // A file's colour channel in linear light: clamped to [0, 1], white where it is not a number.
 float linear_channel(float written, ColourSpace space) {
     const float c = std::isfinite(written) ? std::clamp(written, 0.0F, 1.0F) : 1.0F;
@@ -86,12 +63,21 @@ public:
         return std::move(soup_);
     }
 
-    // Each material's colour and diffuse map; a map that cannot be read is a warning.
-    std::vector<std::pair<LinearMaterial, std::shared_ptr<const Texture>>> materials() {
-        std::vector<std::pair<LinearMaterial, std::shared_ptr<const Texture>>> out;
+    // Each material's Phong and diffuse map (and glTF's metallic-roughness); unreadable maps warn.
+    struct Material {
+        LinearMaterial phong;
+        std::shared_ptr<const Texture> texture;
+        std::optional<MetallicRoughness> pbr;
+    };
+    std::vector<Material> materials() {
+        std::vector<Material> out;
         for (unsigned i = 0; i < scene_.mNumMaterials; ++i) {
             const aiMaterial& m = *scene_.mMaterials[i];
-            out.emplace_back(material_from(m), options_.load_textures ? map_of(m) : nullptr);
+            Material& material = out.emplace_back(phong_from(m), options_.load_textures ? map_of(m) : nullptr);
+            if (!is_gltf_material(m)) continue;
+            material.pbr = gltf_factors(m, name_, model_.warnings);
+            if (!options_.load_textures) continue;
+            for (const GltfMap& map : kGltfMaps) (*material.pbr).*map.slot = map_of(m, map.type, map.encoding);
         }
         return out;
     }
@@ -211,8 +197,18 @@ private:
             m.GetTexture(aiTextureType_DIFFUSE, 0, &written) != AI_SUCCESS) {
             return nullptr;
         }
+        return loaded(written, TexelEncoding::srgb);
+    }
+    // The material's map of `type`, its texels read as `encoding`; null when it has none.
+    std::shared_ptr<const Texture> map_of(const aiMaterial& m, aiTextureType type, TexelEncoding encoding) {
+        aiString written;
+        if (m.GetTexture(type, 0, &written) != AI_SUCCESS) return nullptr;
+        return loaded(written, encoding);
+    }
+    // Each file (or embedded image) read once for each encoding it is read in.
+    std::shared_ptr<const Texture> loaded(const aiString& written, TexelEncoding encoding) {
         const std::string text = written.C_Str();
-        const auto known = loaded_.find(text);
+        const auto known = loaded_.find({text, encoding});
         if (known != loaded_.end()) return known->second;
         std::shared_ptr<const Texture> texture;
         try {
@@ -233,7 +229,9 @@ private:
             model_.warnings.push_back(name_ + ": texture '" + printable(text, 80) + "': " + problem.what() +
                                       "; drawing its material's colour");
         }
-        loaded_.emplace(text, texture);
+        if (texture && encoding != TexelEncoding::srgb)  // data, not colour: its mip chain averaged as data
+            texture = std::make_shared<const Texture>(texture->level(0), encoding);
+        loaded_.emplace(std::pair{text, encoding}, texture);
         return texture;
     }
 
@@ -246,7 +244,7 @@ private:
     PolygonSoup soup_;
     std::size_t unplaced_ = 0;  // points and line ends skipped for coordinates that are not finite
     std::unordered_set<const aiNode*> on_path_;
-    std::map<std::string, std::shared_ptr<const Texture>> loaded_;
+    std::map<std::pair<std::string, TexelEncoding>, std::shared_ptr<const Texture>> loaded_;
 };
 
 // One warning for what the scene carries and raster does not draw (doc/conventions.md#not-drawn).
@@ -293,10 +291,15 @@ void model_from_scene(const aiScene& scene, const std::filesystem::path& path, c
             if (id >= 0 && static_cast<std::size_t>(id) < materials.size()) {
                 const aiString material_name = scene.mMaterials[id]->GetName();
                 part.material_name = material_name.C_Str();
-                part.material = materials[static_cast<std::size_t>(id)].first;
+                const auto& material = materials[static_cast<std::size_t>(id)];
+                part.material = material.phong;
                 part.opacity = opacity_of(*scene.mMaterials[id],
                                           name + ": material '" + printable(part.material_name) + "'", model.warnings);
-                if (!part.mesh.uvs.empty()) part.texture = materials[static_cast<std::size_t>(id)].second;
+                if (!part.mesh.uvs.empty()) part.texture = material.texture;
+                part.metallic_roughness = material.pbr;
+                if (part.metallic_roughness && part.mesh.uvs.empty()) {  // maps need texture coordinates
+                    for (const GltfMap& map : kGltfMaps) (*part.metallic_roughness).*map.slot = nullptr;
+                }
             }
             model.parts.push_back(std::move(part));
         }

@@ -1,0 +1,127 @@
+#include <raster/geometry/mesh.hpp>
+#include <raster/shade/gltf_brdf.hpp>
+#include <raster/shade/metallic_roughness_lighting.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+
+namespace raster {
+namespace {
+
+bool usable(const PointLight& light) noexcept {
+    const glm::vec3& p = light.position;
+    const Falloff& f = light.falloff;
+    const bool finite = std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) &&
+                        std::isfinite(light.intensity) && std::isfinite(f.constant) && std::isfinite(f.linear) &&
+                        std::isfinite(f.quadratic);
+    return finite && f.constant >= 0.0F && f.linear >= 0.0F && f.quadratic >= 0.0F &&
+           (f.constant > 0.0F || f.linear > 0.0F || f.quadratic > 0.0F);
+}
+
+// The tangent-space normal `mapped` turned into the world by the frame that the surface's
+// changes of position and texture coordinate per pixel define (Schüler's cotangent frame, which
+// carries the mirror sign of the mapping with it); the surface normal where there is no frame.
+glm::vec3 mapped_normal(glm::vec3 n, glm::vec3 mapped, const MaterialPoint& p) noexcept {
+    const glm::vec3 dp1 = p.position_per_x, dp2 = p.position_per_y;
+    const glm::vec2 duv1 = p.footprint.per_pixel_x, duv2 = p.footprint.per_pixel_y;
+    const glm::vec3 dp2perp = glm::cross(dp2, n), dp1perp = glm::cross(n, dp1);
+    const glm::vec3 t = dp2perp * duv1.x + dp1perp * duv2.x;
+    const glm::vec3 b = dp2perp * duv1.y + dp1perp * duv2.y;
+    const float longest = std::max(glm::dot(t, t), glm::dot(b, b));
+    if (!(longest > 0.0F) || !std::isfinite(longest)) return n;
+    const float scale = 1.0F / std::sqrt(longest);
+    const glm::vec3 turned = unit_or_zero(t * (mapped.x * scale) + b * (mapped.y * scale) + n * mapped.z);
+    return glm::dot(turned, turned) > 0.0F ? turned : n;
+}
+
+}  // namespace
+
+MetallicRoughnessLighting::MetallicRoughnessLighting(const MetallicRoughness& material, Sampler sampler,
+                                                     const Surroundings* surroundings,
+                                                     std::span<const DirectionalLight> directional,
+                                                     std::span<const PointLight> points, glm::vec3 to_eye,
+                                                     std::optional<glm::vec3> eye)
+    : material_(material.usable()), sampler_(sampler), surroundings_(surroundings), to_eye_(unit_or_zero(to_eye)),
+      eye_(eye) {
+    for (const DirectionalLight& light : directional) {
+        PreparedLight ready = prepare_light(light, to_eye_);
+        ready.intensity = std::clamp(ready.intensity, -LinearLighting::kBrightest, LinearLighting::kBrightest);
+        if (ready.intensity != 0.0F) directional_.push_back(ready);
+    }
+    for (const PointLight& light : points) {
+        if (usable(light) && light.intensity != 0.0F)
+            points_.push_back({light.position, light.intensity, light.falloff});
+    }
+}
+
+MaterialSample MetallicRoughnessLighting::sample(const MaterialPoint& point) const noexcept {
+    const MetallicRoughness& m = material_;
+    const auto read = [&](const std::shared_ptr<const Texture>& map) {
+        return map->sample(point.uv, point.footprint, sampler_);
+    };
+    MaterialSample out{m.base_colour * point.tint, m.metallic, m.roughness, 1.0F, m.emissive,
+                       unit_or_zero(point.normal)};
+    if (m.base_colour_map) out.base_colour = out.base_colour * read(m.base_colour_map);
+    if (m.metallic_roughness_map) {
+        const LinearRgb texel = read(m.metallic_roughness_map);
+        out.metallic *= texel.b, out.roughness *= texel.g;
+    }
+    if (m.occlusion_map) out.occlusion = 1.0F + m.occlusion_strength * (read(m.occlusion_map).r - 1.0F);
+    if (m.emissive_map) out.emissive = out.emissive * read(m.emissive_map);
+    if (m.normal_map && glm::dot(out.normal, out.normal) > 0.0F) {
+        const LinearRgb texel = read(m.normal_map);
+        const glm::vec3 mapped((texel.r * 2.0F - 1.0F) * m.normal_scale, (texel.g * 2.0F - 1.0F) * m.normal_scale,
+                               texel.b * 2.0F - 1.0F);
+        // A texel that is no direction (the zero vector, 128 128 128) leaves the surface's normal.
+        if (glm::dot(mapped, mapped) > 1e-4F) out.normal = mapped_normal(out.normal, mapped, point);
+    }
+    return out;
+}
+
+LinearRgb MetallicRoughnessLighting::shade(glm::vec3 position, const MaterialSample& s) const noexcept {
+    if (!(glm::dot(s.normal, s.normal) > 0.0F)) return s.emissive;
+    glm::vec3 to_eye = to_eye_;
+    if (eye_) {
+        const glm::vec3 toward = unit_or_zero(*eye_ - position);
+        if (glm::dot(toward, toward) > 0.0F) to_eye = toward;
+    }
+    // A normal interpolated past the silhouette is bent back just far enough to see the viewer.
+    glm::vec3 n = s.normal;
+    constexpr float kGrazing = 1e-3F;
+    const float facing = glm::dot(n, to_eye);
+    if (facing < kGrazing) n = unit_or_zero(n + to_eye * (kGrazing - facing));
+    if (!(glm::dot(n, n) > 0.0F)) return s.emissive;
+    LinearRgb direct{};
+    const auto light = [&](glm::vec3 toward, float arriving) {
+        const float n_dot_l = glm::dot(n, toward);
+        if (n_dot_l > 0.0F)
+            direct = direct + gltf_brdf::brdf(s.base_colour, s.metallic, s.roughness, n, to_eye, toward) *
+                                  (gltf_brdf::kPi * arriving * n_dot_l);
+    };
+    for (const PreparedLight& l : directional_) light(l.toward, l.intensity);
+    for (const PreparedPointLight& p : points_) {
+        const glm::vec3 offset = p.position - position;
+        const float distance = glm::length(offset);
+        if (distance > 0.0F && std::isfinite(distance))
+            light(offset / distance, LinearLighting::attenuated(p, distance));
+    }
+    LinearRgb surrounding{};
+    if (surroundings_ != nullptr) {
+        const float n_dot_v = std::clamp(glm::dot(n, to_eye), 0.0F, 1.0F);
+        const LinearRgb f0 = gltf_brdf::f0_of(s.base_colour, s.metallic);
+        const SplitSumTable::Specular split = surroundings_->table().specular(n_dot_v, s.roughness);
+        const glm::vec3 reflected = 2.0F * glm::dot(n, to_eye) * n - to_eye;
+        const LinearRgb specular = surroundings_->specular(reflected, s.roughness) *
+                                   (f0 * split.scale + LinearRgb{split.bias, split.bias, split.bias});
+        const LinearRgb c_diff = s.base_colour * (1.0F - s.metallic);
+        const LinearRgb diffuse = surroundings_->diffuse(n) * c_diff * (LinearRgb{1.0F, 1.0F, 1.0F} - f0) *
+                                  surroundings_->table().diffuse(n_dot_v);
+        surrounding = (specular + diffuse) * s.occlusion;
+    }
+    const LinearRgb total = s.emissive + direct + surrounding;
+    const auto finite = [](float c) { return std::isfinite(c) ? c : 0.0F; };
+    return {finite(total.r), finite(total.g), finite(total.b)};
+}
+
+}  // namespace raster
