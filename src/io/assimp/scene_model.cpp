@@ -124,6 +124,7 @@ private:
         if (has_uvs) soup_.uvs.resize(soup_.positions.size(), glm::vec2(0.0F));
         if (has_colours) soup_.colours.resize(soup_.positions.size(), LinearRgb{1.0F, 1.0F, 1.0F});
         const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(glm::dmat3(world)));
+        soup_.positions.reserve(soup_.positions.size() + mesh.mNumVertices);
         for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
             const aiVector3D& p = mesh.mVertices[v];
             if (!finite(p)) {  // only a face refuses it: a scanner marks missing points so
@@ -165,6 +166,7 @@ private:
         };
         const int material = static_cast<int>(mesh.mMaterialIndex);
         if (mesh.mNumFaces == 0) {  // a point cloud, as assimp's PLY reader gives one
+            soup_.points.reserve(soup_.points.size() + mesh.mNumVertices);
             for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
                 if (const SoupCorner corner = corner_at(v); drawable(corner))
                     soup_.points.push_back({corner, material});
