@@ -62,6 +62,17 @@ void push_vertex(Mesh& mesh, const PolygonSoup& soup, const SoupCorner& corner, 
 
 }  // namespace
 
+void add_every_vertex_as_a_point(PolygonSoup& soup) {
+    const bool paired = soup.normals.size() == soup.positions.size();
+    const bool coloured = soup.colours.size() == soup.positions.size();
+    for (std::size_t v = 0; v < soup.positions.size(); ++v) {
+        const glm::vec3& p = soup.positions[v];
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) continue;
+        const auto at = static_cast<std::int64_t>(v);
+        soup.points.push_back({{at, paired ? at : kNoIndex, kNoIndex, coloured ? at : kNoIndex}, -1});
+    }
+}
+
 std::vector<std::pair<int, Mesh>> meshes_by_material(const PolygonSoup& soup, double crease_degrees) {
     // Facet normals, and the facets around each position, for the normals the file lacks.
     std::vector<glm::dvec3> weighted(soup.triangles.size());
