@@ -62,6 +62,17 @@ void push_vertex(Mesh& mesh, const PolygonSoup& soup, const SoupCorner& corner, 
 
 }  // namespace
 
+void add_every_vertex_as_a_point(PolygonSoup& soup) {
+    const bool paired = soup.normals.size() == soup.positions.size();
+    const bool coloured = soup.colours.size() == soup.positions.size();
+    for (std::size_t v = 0; v < soup.positions.size(); ++v) {
+        const glm::vec3& p = soup.positions[v];
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) continue;
+        const auto at = static_cast<std::int64_t>(v);
+        soup.points.push_back({{at, paired ? at : kNoIndex, kNoIndex, coloured ? at : kNoIndex}, -1});
+    }
+}
+
 std::vector<std::pair<int, Mesh>> meshes_by_material(const PolygonSoup& soup, double crease_degrees) {
     // Facet normals, and the facets around each position, for the normals the file lacks.
     std::vector<glm::dvec3> weighted(soup.triangles.size());
@@ -126,11 +137,18 @@ std::vector<std::pair<int, Mesh>> meshes_by_material(const PolygonSoup& soup, do
         meshes[triangle.material].facets.push_back(facet);
     }
     // Every point is a vertex of its own: a cloud of millions would only slow a shared index down.
+    Mesh* cloud = nullptr;  // the last point's mesh: a cloud of one material looks it up once
+    int cloud_material = 0;
+    bool with_uvs = false, with_colours = false;
     for (const SoupPoint& point : soup.points) {
-        Mesh& mesh = meshes[point.material];
-        mesh.points.push_back(static_cast<std::uint32_t>(mesh.positions.size()));
-        push_vertex(mesh, soup, point.corner, file_normal(soup, point.corner), textured[point.material],
-                    coloured[point.material]);
+        if (cloud == nullptr || point.material != cloud_material) {
+            cloud_material = point.material;
+            cloud = &meshes[cloud_material];
+            with_uvs = textured[cloud_material];
+            with_colours = coloured[cloud_material];
+        }
+        cloud->points.push_back(static_cast<std::uint32_t>(cloud->positions.size()));
+        push_vertex(*cloud, soup, point.corner, file_normal(soup, point.corner), with_uvs, with_colours);
     }
     for (const SoupSegment& segment : soup.segments) {
         const std::uint32_t a = vertex_of(segment.ends[0], file_normal(soup, segment.ends[0]), segment.material);

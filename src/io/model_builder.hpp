@@ -48,6 +48,10 @@ struct PolygonSoup {
     std::vector<SoupSegment> segments{};
 };
 
+// Every vertex with finite coordinates as a point of the default material, the n-th normal
+// its normal when there are as many normals as vertices, its colour when there are colours.
+void add_every_vertex_as_a_point(PolygonSoup& soup);
+
 // One mesh per material the triangles use, in order of material. Each corner without a usable normal
 // takes the area-weighted mean of the facet normals around its position that lie within
 // `crease_degrees` of its own facet's (0: every facet flat). Triangles with no area are dropped.

@@ -7,6 +7,7 @@
 #include "io/model_builder.hpp"
 #include "io/named_path.hpp"
 #include "io/obj_survey.hpp"
+#include "io/obj_text.hpp"
 
 #include <raster/io/input_file.hpp>
 
@@ -26,40 +27,17 @@
 
 namespace raster {
 
+using detail::load_failure;
+using detail::note_named;
+using detail::rethrow_named;
+using detail::text_rules;
+
 namespace {
 
 // A problem that stops the model: the caller prefixes the file's name.
 struct BadModel : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
-
-// Binary files people pass by mistake (images, glTF, archives, programs) are refused from their
-// first bytes; OBJ and MTL have no signature of their own.
-bool not_binary(std::span<const std::uint8_t> head) {
-    const auto starts = [&](std::string_view magic) {
-        return head.size() >= magic.size() &&
-               std::equal(magic.begin(), magic.end(), head.begin(),
-                          [](char m, std::uint8_t b) { return static_cast<std::uint8_t>(m) == b; });
-    };
-    return !(starts("\x89PNG") || starts("\xFF\xD8\xFF") || starts("GIF8") || starts("RIFF") || starts("glTF") ||
-             starts("PK\x03\x04") || starts("\177ELF"));
-}
-
-InputRules text_rules(std::string role, std::string expected, const std::filesystem::path& confine) {
-    InputRules rules;
-    rules.role = std::move(role);
-    rules.max_bytes = kMaxModelFileBytes;
-    rules.signature = not_binary;
-    rules.signature_bytes = 8;
-    rules.expected = std::move(expected);
-    rules.confine = confine;
-    return rules;
-}
-
-// Notes a file the model names, whether or not it can be read: no output may replace it.
-void note_named(std::vector<InputRecord>& sources, const std::filesystem::path& path, const char* role) {
-    if (FileIdentity identity; identity_of(path, identity)) sources.push_back({path, identity, role});
-}
 
 // Reads each MTL file the OBJ names, from beside the OBJ (or from text given in memory), and
 // remembers which directory every material came from, for its texture paths.
@@ -228,15 +206,7 @@ detail::PolygonSoup soup_from(const tinyobj::attrib_t& attrib, const std::vector
     }
     if (survey.faces == 0 && survey.skipped_faces == 0 && survey.points == 0 && survey.segments == 0 &&
         survey.short_line == 0) {
-        // Vertices alone are a point cloud, as MeshLab writes one; the n-th normal is the n-th vertex's.
-        const bool paired = soup.normals.size() == soup.positions.size();
-        for (std::size_t v = 0; v < soup.positions.size(); ++v) {
-            const glm::vec3& p = soup.positions[v];
-            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) continue;  // the survey warned
-            const auto at = static_cast<std::int64_t>(v);
-            soup.points.push_back(
-                {{at, paired ? at : detail::kNoIndex, detail::kNoIndex, coloured ? at : detail::kNoIndex}, -1});
-        }
+        detail::add_every_vertex_as_a_point(soup);  // a point cloud, as MeshLab writes one
     }
     return soup;
 }
@@ -250,26 +220,6 @@ LinearMaterial material_from(const tinyobj::material_t& m) {
     const bool has_specular = material.specular != LinearRgb{};
     if (has_specular && std::isfinite(m.shininess) && m.shininess > 0.0F) material.shininess = m.shininess;
     return material;
-}
-
-// tinyobjloader fails a load only on an index it cannot read in a statement the survey does not
-// check (l, p, vw): said in raster's words, with the line where its message has one.
-std::runtime_error load_failure(const std::string& err, const std::string& name) {
-    const std::size_t at = err.find("line ");
-    std::size_t line = 0;
-    if (at != std::string::npos) std::from_chars(err.data() + at + 5, err.data() + err.size(), line);
-    if (line == 0) return std::runtime_error(name + ": not an OBJ model raster can read");
-    return std::runtime_error(name + ":" + std::to_string(line) + ": a statement with an index raster cannot read");
-}
-
-// Rethrows the exception being handled as one line that begins with the file's name.
-[[noreturn]] void rethrow_named(const std::string& name) {
-    try {
-        throw;
-    } catch (const std::runtime_error& problem) {
-        const std::string what = problem.what();
-        throw std::runtime_error(what.starts_with(name + ":") ? what : name + ": " + what);
-    }
 }
 
 // The survey's word on materials a face asks for that no library gave, unless a library that

@@ -69,6 +69,17 @@ std::string binary_problem(const std::vector<PlyElement>& elements, std::span<co
     std::size_t at = 0;
     for (const PlyElement& element : elements) {
         if (std::string problem = too_many(element, body.size() - at, false); !problem.empty()) return problem;
+        if (std::none_of(element.properties.begin(), element.properties.end(),
+                         [](const PlyProperty& p) { return p.list; })) {
+            // Elements of one size (a point cloud's vertices): checked at once, not one by one.
+            const std::uint64_t size = least_bytes(element, false);
+            if (element.count * size > body.size() - at) {
+                shortfall = cut_short(element, (body.size() - at) / size);
+                return "";
+            }
+            at += static_cast<std::size_t>(element.count * size);
+            continue;
+        }
         for (std::uint64_t i = 0; i < element.count; ++i) {
             for (const PlyProperty& property : element.properties) {
                 std::uint64_t need =

@@ -83,9 +83,10 @@ TEST(ModelFormats, FoldersItCannotReadAreRefusedSayingWhy) {
         {"CSM/ThomasFechten.csm", "CharacterStudio motion without a model, which raster does not read"},
         {"Ogre/TheThing/Mesh.mesh.xml",
          "XML, which may be Collada, Irrlicht or Ogre: rename it .dae, .irr, .irrmesh or .mesh"},
-        // assimp 5.2.5's own readers fail on these: its Irrlicht XML parser, Terragen's size check.
-        {"IRRMesh/spider.irrmesh", "not an Irrlicht model raster can read (or one it finds broken)"},
-        {"IRR/box.irr", "not an Irrlicht model raster can read (or one it finds broken)"},
+        // Irrlicht's samples are UTF-16, which assimp 5.2.5's XML parser fails on too.
+        {"IRRMesh/spider.irrmesh", "is UTF-16 text, which raster does not read: save it as UTF-8"},
+        {"IRR/box.irr", "is UTF-16 text, which raster does not read: save it as UTF-8"},
+        // assimp 5.2.5's own reader fails on this one.
         {"TER/RealisticTerrain.ter", "not a Terragen terrain model raster can read (or one it finds broken)"},
         {"glTF/BoxTextured-glTF/BoxTextured.gltf", "is glTF 1.0; raster reads glTF 2.0"},
     };

@@ -1,3 +1,5 @@
+// One assimp scene as raster's Model: nodes walked, meshes placed, materials read; stays whole so the walk reads as
+// one.
 #include "io/assimp/scene_model.hpp"
 
 #include "geometry/polygon_triangles.hpp"
@@ -111,6 +113,7 @@ private:
         if (has_uvs) soup_.uvs.resize(soup_.positions.size(), glm::vec2(0.0F));
         if (has_colours) soup_.colours.resize(soup_.positions.size(), LinearRgb{1.0F, 1.0F, 1.0F});
         const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(glm::dmat3(world)));
+        soup_.positions.reserve(soup_.positions.size() + mesh.mNumVertices);
         for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
             const aiVector3D& p = mesh.mVertices[v];
             if (!finite(p)) {  // only a face refuses it: a scanner marks missing points so
@@ -152,6 +155,7 @@ private:
         };
         const int material = static_cast<int>(mesh.mMaterialIndex);
         if (mesh.mNumFaces == 0) {  // a point cloud, as assimp's PLY reader gives one
+            soup_.points.reserve(soup_.points.size() + mesh.mNumVertices);
             for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
                 if (const SoupCorner corner = corner_at(v); drawable(corner))
                     soup_.points.push_back({corner, material});
@@ -247,30 +251,6 @@ private:
     std::map<std::pair<std::string, TexelEncoding>, std::shared_ptr<const Texture>> loaded_;
 };
 
-// One warning for what the scene carries and raster does not draw (doc/conventions.md#not-drawn).
-void warn_of_what_is_not_drawn(const aiScene& scene, const std::string& name, Model& model) {
-    bool skinned = false, morphed = false;
-    for (unsigned i = 0; scene.mMeshes != nullptr && i < scene.mNumMeshes; ++i) {
-        if (scene.mMeshes[i] == nullptr) continue;
-        skinned = skinned || scene.mMeshes[i]->mNumBones > 0;
-        morphed = morphed || scene.mMeshes[i]->mNumAnimMeshes > 0;
-    }
-    std::vector<std::string> parts;
-    if (skinned) parts.emplace_back("a skin (drawn in its rest pose)");
-    if (morphed) parts.emplace_back("morph targets (drawn in the rest pose)");
-    const auto counted = [&](unsigned count, const char* one, const char* many) {
-        if (count > 0) parts.push_back(std::to_string(count) + " " + (count == 1 ? one : many));
-    };
-    counted(scene.mNumAnimations, "animation (not played)", "animations (not played)");
-    counted(scene.mNumCameras, "camera (raster frames the model itself)", "cameras (raster frames the model itself)");
-    counted(scene.mNumLights, "light (raster lights the model itself)", "lights (raster lights the model itself)");
-    if (parts.empty()) return;
-    std::string text;
-    for (std::size_t i = 0; i < parts.size(); ++i)
-        text += (i == 0 ? "" : i + 1 == parts.size() ? " and " : ", ") + parts[i];
-    model.warnings.push_back(name + ": it carries " + text);
-}
-
 }  // namespace
 
 ColourSpace colour_space_of(std::string format) {
@@ -308,18 +288,6 @@ void model_from_scene(const aiScene& scene, const std::filesystem::path& path, c
     }
     if (model.parts.empty()) throw std::runtime_error(name + ": " + kNothingToDraw);
     warn_of_what_is_not_drawn(scene, name, model);
-}
-
-void warn_of_unsupported_extensions(const std::vector<std::string>& used, const std::string& name, Model& model) {
-    // Drawn by raster's materials (doc/conventions.md#not-drawn).
-    static constexpr std::array<std::string_view, 2> kDrawn{"KHR_texture_transform", "KHR_materials_emissive_strength"};
-    std::string names;
-    for (const std::string& extension : used) {
-        if (std::find(kDrawn.begin(), kDrawn.end(), extension) != kDrawn.end()) continue;
-        names += (names.empty() ? "" : ", ") + printable(extension, 64);
-    }
-    if (!names.empty())
-        model.warnings.push_back(name + ": glTF extensions raster does not draw: " + names + "; drawn without them");
 }
 
 }  // namespace raster::detail

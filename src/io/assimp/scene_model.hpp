@@ -24,6 +24,10 @@ enum class ColourSpace { linear, srgb };
 void model_from_scene(const aiScene& scene, const std::filesystem::path& path, const std::string& name,
                       ColourSpace colours, const ObjOptions& options, Model& model);
 
+// One warning for what the scene carries and raster does not draw: skins, morph targets,
+// animations, cameras, lights (doc/conventions.md#not-drawn).
+void warn_of_what_is_not_drawn(const aiScene& scene, const std::string& name, Model& model);
+
 // One warning naming the glTF extensions among `used` that raster does not draw, if any.
 void warn_of_unsupported_extensions(const std::vector<std::string>& used, const std::string& name, Model& model);
 
