@@ -32,7 +32,11 @@ LoadedModel load_model(const std::string& path, const RenderPlan& plan) {
             loaded.warnings.push_back(warning);
     }
     for (raster::ModelPart& part : model.parts) part.sampler.filter = plan.filter;
-    loaded.triangles = raster::triangle_count(model);
+    const std::size_t triangles = raster::triangle_count(model), points = raster::point_count(model),
+                      lines = raster::segment_count(model);
+    if (triangles > 0 || (points == 0 && lines == 0)) loaded.contents = std::to_string(triangles) + " triangles";
+    if (points > 0) loaded.contents += (loaded.contents.empty() ? "" : ", ") + std::to_string(points) + " points";
+    if (lines > 0) loaded.contents += (loaded.contents.empty() ? "" : ", ") + std::to_string(lines) + " lines";
     loaded.model = std::make_shared<const raster::Model>(std::move(model));
     loaded.seconds = seconds_since(start);
     return loaded;
@@ -51,7 +55,7 @@ std::function<FinishedPicture()> render_model(const CLI::App& app, ExportOptions
         stage.render(frame, renderer, turn);
         if (plan.view.transparent) alpha = renderer.coverage();
     };
-    const std::string tail = ", " + std::to_string(loaded.triangles) + " triangles, ";
+    const std::string tail = ", " + loaded.contents + ", ";
     const double loading = loaded.seconds;
     if (plan.frames == 0) {
         auto finish = render_still(app, options, [&](raster::Framebuffer& frame, std::vector<std::uint8_t>& alpha) {

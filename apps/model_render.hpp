@@ -21,7 +21,7 @@ struct LoadedModel {
     std::shared_ptr<const raster::Model> model;
     std::vector<raster::InputRecord> inputs;  // every file read for it, which no output may replace
     std::vector<std::string> warnings;
-    std::size_t triangles = 0;
+    std::string contents;  // "N triangles", and points and lines where it has them
     double seconds = 0.0;  // reading it took
     std::string refusal;   // why a batch will not draw it, though it was read
 };

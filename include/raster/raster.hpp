@@ -31,10 +31,10 @@
 #include <raster/shade/gltf_brdf.hpp>
 #include <raster/shade/intensity_lighting.hpp>
 #include <raster/shade/linear_lighting.hpp>
-#include <raster/shade/opacity.hpp>
 #include <raster/shade/metallic_roughness.hpp>
 #include <raster/shade/metallic_roughness_lighting.hpp>
 #include <raster/shade/metallic_roughness_shaders.hpp>
+#include <raster/shade/opacity.hpp>
 #include <raster/shade/shaders.hpp>
 #include <raster/shade/split_sum_table.hpp>
 #include <raster/shade/surroundings.hpp>

@@ -179,8 +179,8 @@ Model model_from_wire(std::span<const std::uint8_t> bytes) {
         }
         std::vector<std::uint8_t> alpha = wire.array<std::uint8_t>();
         try {
-            texture = std::make_shared<const Texture>(Texture::from_levels(
-                std::move(levels), static_cast<TexelEncoding>(encoding), std::move(alpha)));
+            texture = std::make_shared<const Texture>(
+                Texture::from_levels(std::move(levels), static_cast<TexelEncoding>(encoding), std::move(alpha)));
         } catch (const std::invalid_argument&) {
             WireReader::broken();
         }

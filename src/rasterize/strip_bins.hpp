@@ -60,36 +60,26 @@ inline bool between_columns(const std::array<SubpixelPoint, 3>& points, std::int
     return -floor_div(-low, kSubpixelOne) > floor_div(high, kSubpixelOne);
 }
 
-// One object's triangles with their corners shaded, and for every strip the triangles in it,
-// in the order they were added.
-template <typename Varying>
-class StripBins {
+// Items kept with the strips they reach, and each strip's items in the order they were kept: a
+// counting sort, so that strips drawn on any threads meet their items in one order.
+template <typename Item>
+class StripLists {
 public:
-    using Triangle = std::array<ShadedCorner<Varying>, 3>;
+    explicit StripLists(int strips) : starts_(static_cast<std::size_t>(strips + 1), 0) {}
 
-    // `reach`: how far, in subpixels, a sample may lie from its pixel centre (0 without multisampling).
-    explicit StripBins(const StripLayout& layout, std::int32_t reach = 0)
-        : height_(layout.height), rows_(layout.rows), reach_(reach),
-          starts_(static_cast<std::size_t>(layout.count() + 1), 0) {}
-
-    // Room for this many triangles: a facet is one unless clipping splits it.
-    void reserve(std::size_t triangles) {
-        triangles_.reserve(triangles);
-        spans_.reserve(triangles);
+    void reserve(std::size_t items) {
+        items_.reserve(items);
+        spans_.reserve(items);
     }
 
-    // Keeps a triangle that can cover a pixel centre of the image; counts it into its strips.
-    void add(const Triangle& corners) {
-        const std::array<SubpixelPoint, 3> points{corners[0].at, corners[1].at, corners[2].at};
-        const RowRange rows = rows_reached(points, height_, reach_);
-        if (rows.first > rows.last || between_columns(points, reach_)) return;  // covers no sample of the image
-        const int first = rows.first / rows_, last = rows.last / rows_;
-        triangles_.push_back(corners);
+    // Keeps an item that reaches strips `first` to `last`.
+    void keep(const Item& item, int first, int last) {
+        items_.push_back(item);
         spans_.push_back({first, last});
         for (int s = first; s <= last; ++s) ++starts_[static_cast<std::size_t>(s) + 1];
     }
 
-    // Lays out every strip's list; call once, after the last add().
+    // Lays out every strip's list; call once, after the last keep().
     void finish() {
         for (std::size_t s = 1; s < starts_.size(); ++s) starts_[s] += starts_[s - 1];
         members_.resize(starts_.back());
@@ -102,20 +92,52 @@ public:
 
     template <typename Draw>
     void for_each_in(int s, Draw draw) const {
-        for (std::uint32_t k = starts_[static_cast<std::size_t>(s)]; k < starts_[static_cast<std::size_t>(s) + 1];
-             ++k) {
-            draw(triangles_[members_[k]]);
-        }
+        for (std::uint32_t k = starts_[static_cast<std::size_t>(s)]; k < starts_[static_cast<std::size_t>(s) + 1]; ++k)
+            draw(items_[members_[k]]);
+    }
+
+private:
+    std::vector<Item> items_;
+    std::vector<RowRange> spans_;        // strips, not rows: first and last
+    std::vector<std::uint32_t> starts_;  // per strip, where its members begin; one past the end last
+    std::vector<std::uint32_t> members_;
+};
+
+// One object's triangles with their corners shaded, and for every strip the triangles in it,
+// in the order they were added.
+template <typename Varying>
+class StripBins {
+public:
+    using Triangle = std::array<ShadedCorner<Varying>, 3>;
+
+    // `reach`: how far, in subpixels, a sample may lie from its pixel centre (0 without multisampling).
+    explicit StripBins(const StripLayout& layout, std::int32_t reach = 0)
+        : height_(layout.height), rows_(layout.rows), reach_(reach), lists_(layout.count()) {}
+
+    // Room for this many triangles: a facet is one unless clipping splits it.
+    void reserve(std::size_t triangles) { lists_.reserve(triangles); }
+
+    // Keeps a triangle that can cover a pixel centre of the image; counts it into its strips.
+    void add(const Triangle& corners) {
+        const std::array<SubpixelPoint, 3> points{corners[0].at, corners[1].at, corners[2].at};
+        const RowRange rows = rows_reached(points, height_, reach_);
+        if (rows.first > rows.last || between_columns(points, reach_)) return;  // covers no sample of the image
+        lists_.keep(corners, rows.first / rows_, rows.last / rows_);
+    }
+
+    // Lays out every strip's list; call once, after the last add().
+    void finish() { lists_.finish(); }
+
+    template <typename Draw>
+    void for_each_in(int s, Draw draw) const {
+        lists_.for_each_in(s, draw);
     }
 
 private:
     int height_;
     int rows_;
     std::int32_t reach_;
-    std::vector<Triangle> triangles_;
-    std::vector<RowRange> spans_;        // strips, not rows: first and last
-    std::vector<std::uint32_t> starts_;  // per strip, where its members begin; one past the end last
-    std::vector<std::uint32_t> members_;
+    StripLists<Triangle> lists_;
 };
 
 }  // namespace raster::detail

@@ -3,8 +3,8 @@
 #include <raster/geometry/mesh.hpp>
 #include <raster/io/input_file.hpp>
 #include <raster/shade/linear_lighting.hpp>
-#include <raster/shade/opacity.hpp>
 #include <raster/shade/metallic_roughness.hpp>
+#include <raster/shade/opacity.hpp>
 #include <raster/shade/texture.hpp>
 
 #include <cstddef>

@@ -8,8 +8,8 @@
 #include <raster/rasterize/depth_buffer.hpp>
 #include <raster/shade/intensity_lighting.hpp>
 #include <raster/shade/linear_lighting.hpp>
-#include <raster/shade/opacity.hpp>
 #include <raster/shade/metallic_roughness.hpp>
+#include <raster/shade/opacity.hpp>
 #include <raster/shade/surroundings.hpp>
 #include <raster/shade/texture.hpp>
 

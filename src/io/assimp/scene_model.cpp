@@ -3,8 +3,8 @@
 #include "io/assimp/scene_model.hpp"
 
 #include "geometry/polygon_triangles.hpp"
-#include "io/assimp/material_alpha.hpp"
 #include "io/assimp/gltf_material.hpp"
+#include "io/assimp/material_alpha.hpp"
 #include "io/gltf_structure.hpp"
 #include "io/model_builder.hpp"
 #include "io/named_path.hpp"
