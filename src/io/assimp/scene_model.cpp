@@ -75,7 +75,8 @@ public:
         std::vector<Material> out;
         for (unsigned i = 0; i < scene_.mNumMaterials; ++i) {
             const aiMaterial& m = *scene_.mMaterials[i];
-            Material& material = out.emplace_back(phong_from(m), options_.load_textures ? map_of(m) : nullptr);
+            Material& material =
+                out.emplace_back(Material{phong_from(m), options_.load_textures ? map_of(m) : nullptr, {}});
             if (!is_gltf_material(m)) continue;
             material.pbr = gltf_factors(m, name_, model_.warnings);
             if (!options_.load_textures) continue;
