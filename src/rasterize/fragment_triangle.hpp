@@ -13,6 +13,7 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <span>
 
 // A triangle whose alpha matters, its coverage and depth tested at every sample as multisampling
@@ -41,15 +42,14 @@ void gather_triangle(FragmentList* list, OpaqueDepths opaque, int frame_width,
                      LaneBatch<Shader>& lanes) {
     using Varying = typename Shader::Varying;
     (void)shader;
-    const std::array<SubpixelPoint, 3> points{corners[0].at, corners[1].at, corners[2].at};
-    const std::int64_t twice_area = twice_signed_area(points);
-    if (twice_area == 0) return;
-    const std::array<WeightPlane, 2> planes = weight_planes(points[0], points[1], points[2], twice_area);
-    const WeightPlane& w1 = planes[0];
-    const WeightPlane& w2 = planes[1];
-    const Varying base = corners[0].varying;
-    const Varying along1 = corners[1].varying - base;
-    const Varying along2 = corners[2].varying - base;
+    const std::optional<TriangleSetup<Shader>> setup = triangle_weights<Shader>(corners);
+    if (!setup) return;  // covers nothing
+    const std::array<SubpixelPoint, 3>& points = setup->points;
+    const WeightPlane& w1 = setup->w1;
+    const WeightPlane& w2 = setup->w2;
+    const Varying& base = setup->base;
+    const Varying& along1 = setup->along1;
+    const Varying& along2 = setup->along2;
     const double z0 = corners[0].depth, z1 = corners[1].depth - z0, z2 = corners[2].depth - z0;
     const double inv0 = 1.0 / corners[0].depth, inv1 = 1.0 / corners[1].depth, inv2 = 1.0 / corners[2].depth;
     const PerspectiveWeights weights(w1, w2, inv0, inv1, inv2);

@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <span>
 #include <glm/vec2.hpp>
 
@@ -26,24 +27,19 @@ void shade_triangle_samples(SampleBuffer& target, bool depth_test,
                             PixelRect rows, std::span<const SampleOffset> offsets, LaneBatch<Shader>* batch = nullptr) {
     static_assert(kMode != Interpolation::perspective_float, "a lab choice, drawn with one sample only");
     using Varying = typename Shader::Varying;
-    const std::array<SubpixelPoint, 3> points{corners[0].at, corners[1].at, corners[2].at};
-    const std::int64_t twice_area = twice_signed_area(points);
-    if (twice_area == 0) return;
-    const std::array<WeightPlane, 2> planes = weight_planes(points[0], points[1], points[2], twice_area);
-    const WeightPlane& w1 = planes[0];
-    const WeightPlane& w2 = planes[1];
-    const Varying base = corners[0].varying;
-    const Varying along1 = corners[1].varying - base;
-    const Varying along2 = corners[2].varying - base;
+    const std::optional<TriangleSetup<Shader>> setup = set_up_triangle(corners, shader);
+    if (!setup) return;  // covers nothing
+    const std::array<SubpixelPoint, 3>& points = setup->points;
+    const WeightPlane& w1 = setup->w1;
+    const WeightPlane& w2 = setup->w2;
+    const Varying& base = setup->base;
+    const Varying& along1 = setup->along1;
+    const Varying& along2 = setup->along2;
     const double z0 = corners[0].depth, z1 = corners[1].depth - z0, z2 = corners[2].depth - z0;
     const double inv0 = 1.0 / corners[0].depth, inv1 = 1.0 / corners[1].depth, inv2 = 1.0 / corners[2].depth;
     const PerspectiveWeights weights(w1, w2, inv0, inv1, inv2);
-    bool constant = false;
-    Rgb constant_colour{};
-    if constexpr (!NeedsFootprint<Shader> && std::equality_comparable<Varying>) {
-        constant = corners[1].varying == base && corners[2].varying == base;
-        if (constant) constant_colour = shader.pixel(base);
-    }
+    const bool constant = setup->constant;
+    const Rgb constant_colour = setup->constant_colour;
     // The view depth where the weights of corners 1 and 2 are a and b.
     const auto depth_at = [&](double a, double b) {
         if constexpr (kMode == Interpolation::perspective) {

@@ -69,23 +69,32 @@ struct TriangleSetup {
 
 // Nothing for a triangle that covers nothing (its weights would divide by zero).
 template <typename Shader>
-std::optional<TriangleSetup<Shader>> set_up_triangle(
-    const std::array<ShadedCorner<typename Shader::Varying>, 3>& corners, const Shader& shader) {
+std::optional<TriangleSetup<Shader>> triangle_weights(
+    const std::array<ShadedCorner<typename Shader::Varying>, 3>& corners) {
     const std::array<SubpixelPoint, 3> points{corners[0].at, corners[1].at, corners[2].at};
     const std::int64_t twice_area = twice_signed_area(points);
     if (twice_area == 0) return std::nullopt;
     const std::array<WeightPlane, 2> planes = weight_planes(points[0], points[1], points[2], twice_area);
-    TriangleSetup<Shader> setup{points,
-                                planes[0],
-                                planes[1],
-                                corners[0].varying,
-                                corners[1].varying - corners[0].varying,
-                                corners[2].varying - corners[0].varying};
+    return TriangleSetup<Shader>{points,
+                                 planes[0],
+                                 planes[1],
+                                 corners[0].varying,
+                                 corners[1].varying - corners[0].varying,
+                                 corners[2].varying - corners[0].varying};
+}
+
+// triangle_weights(), and the colour of a triangle shaded the same everywhere.
+template <typename Shader>
+std::optional<TriangleSetup<Shader>> set_up_triangle(
+    const std::array<ShadedCorner<typename Shader::Varying>, 3>& corners, const Shader& shader) {
+    std::optional<TriangleSetup<Shader>> setup = triangle_weights<Shader>(corners);
     // A Varying equal at all three corners (flat shading) is the same at every pixel: shaded
     // once here, the pixels only take depth and the write. The colour is the one pixel() would give.
     if constexpr (!NeedsFootprint<Shader> && std::equality_comparable<typename Shader::Varying>) {
-        setup.constant = corners[1].varying == setup.base && corners[2].varying == setup.base;
-        if (setup.constant) setup.constant_colour = shader.pixel(setup.base);
+        if (setup) {
+            setup->constant = corners[1].varying == setup->base && corners[2].varying == setup->base;
+            if (setup->constant) setup->constant_colour = shader.pixel(setup->base);
+        }
     }
     return setup;
 }
