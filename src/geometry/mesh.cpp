@@ -40,8 +40,9 @@ Mesh posed(const Mesh& mesh, const glm::mat4& model, PoseParts parts) {
 void append_posed(Mesh& whole, const Mesh& part, const glm::mat4& model) {
     const bool empty = whole.positions.empty();
     if (!empty && (whole.uvs.empty() != part.uvs.empty() || whole.colours.empty() != part.colours.empty() ||
-                   whole.surface != part.surface)) {
-        throw std::invalid_argument("append_posed: the parts differ in texture coordinates, colours or surface");
+                   whole.tangents.empty() != part.tangents.empty() || whole.surface != part.surface)) {
+        throw std::invalid_argument(
+            "append_posed: the parts differ in texture coordinates, colours, tangents or surface");
     }
     Mesh moved = posed(part, model);
     const auto offset = static_cast<std::uint32_t>(whole.positions.size());
@@ -53,6 +54,7 @@ void append_posed(Mesh& whole, const Mesh& part, const glm::mat4& model) {
     whole.facets.insert(whole.facets.end(), moved.facets.begin(), moved.facets.end());
     whole.uvs.insert(whole.uvs.end(), moved.uvs.begin(), moved.uvs.end());
     whole.colours.insert(whole.colours.end(), moved.colours.begin(), moved.colours.end());
+    whole.tangents.insert(whole.tangents.end(), moved.tangents.begin(), moved.tangents.end());
     whole.surface = part.surface;
     whole.convex = empty && part.convex;
 }
@@ -69,6 +71,7 @@ Posing::Posing(const Mesh& mesh, const glm::mat4& model, PoseParts parts)
     result_.normals.resize(mesh.normals.size());  // zero where vertex normals are left out
     result_.uvs = mesh.uvs;
     result_.colours = mesh.colours;
+    result_.tangents.resize(mesh.tangents.size());
     result_.facets.resize(mesh.facets.size());
 }
 
@@ -78,6 +81,10 @@ void Posing::vertices(std::size_t begin, std::size_t end) noexcept {
             result_.positions[i] = glm::vec3(model_ * glm::vec4(source_.positions[i], 1.0F));
         if (parts_.vertex_normals && i < source_.normals.size())
             result_.normals[i] = unit_or_zero(normal_matrix_ * source_.normals[i]);
+        if (i < source_.tangents.size()) {  // a direction in the surface; a mirror turns its handedness
+            const glm::vec4& t = source_.tangents[i];
+            result_.tangents[i] = glm::vec4(unit_or_zero(glm::mat3(model_) * glm::vec3(t)), mirrored_ ? -t.w : t.w);
+        }
     }
 }
 

@@ -25,6 +25,7 @@ void write_mesh(WireWriter& out, const Mesh& mesh) {
     out.array(mesh.colours);
     out.array(mesh.points);
     out.array(mesh.segments);
+    out.array(mesh.tangents);
 }
 
 Mesh read_mesh(WireReader& in) {
@@ -40,9 +41,10 @@ Mesh read_mesh(WireReader& in) {
     mesh.colours = in.array<LinearRgb>();
     mesh.points = in.array<std::uint32_t>();
     mesh.segments = in.array<std::array<std::uint32_t, 2>>();
+    mesh.tangents = in.array<glm::vec4>();
     const std::size_t n = mesh.positions.size();
     if ((!mesh.normals.empty() && mesh.normals.size() != n) || (!mesh.uvs.empty() && mesh.uvs.size() != n) ||
-        (!mesh.colours.empty() && mesh.colours.size() != n)) {
+        (!mesh.colours.empty() && mesh.colours.size() != n) || (!mesh.tangents.empty() && mesh.tangents.size() != n)) {
         WireReader::broken();
     }
     for (const Facet& facet : mesh.facets) {
@@ -77,7 +79,8 @@ std::size_t model_wire_size(const Model& model) noexcept {
         size += 256 + part.material_name.size() + m.positions.size() * sizeof(glm::vec3) +
                 m.normals.size() * sizeof(glm::vec3) + m.facets.size() * sizeof(Facet) +
                 m.uvs.size() * sizeof(glm::vec2) + m.colours.size() * sizeof(LinearRgb) +
-                m.points.size() * sizeof(std::uint32_t) + m.segments.size() * sizeof(m.segments[0]);
+                m.points.size() * sizeof(std::uint32_t) + m.segments.size() * sizeof(m.segments[0]) +
+                m.tangents.size() * sizeof(glm::vec4);
         const auto count = [&](const std::shared_ptr<const Texture>& texture) {
             if (texture && counted.emplace(texture.get(), true).second)
                 size += 64 + texture->level(0).bytes().size() * 4 / 3 + 64 * texture->level_count() +

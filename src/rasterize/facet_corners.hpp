@@ -39,6 +39,10 @@ inline void check_drawable(const Framebuffer& colour, const DepthBuffer* depth_b
         throw std::invalid_argument("mesh has " + std::to_string(mesh.colours.size()) + " colours for " +
                                     std::to_string(mesh.positions.size()) + " positions");
     }
+    if (!mesh.tangents.empty() && mesh.tangents.size() != mesh.positions.size()) {
+        throw std::invalid_argument("mesh has " + std::to_string(mesh.tangents.size()) + " tangents for " +
+                                    std::to_string(mesh.positions.size()) + " positions");
+    }
     for (const Facet& facet : mesh.facets) {
         for (const std::uint32_t corner : facet.corners) {
             if (corner >= mesh.positions.size()) throw std::invalid_argument("mesh facet names a missing vertex");
@@ -50,7 +54,8 @@ inline void check_drawable(const Framebuffer& colour, const DepthBuffer* depth_b
 inline Corner corner_of(const Mesh& mesh, const Facet& facet, std::size_t k, glm::vec3 position, glm::vec3 normal) {
     const std::uint32_t i = facet.corners[k];
     return {position, normal, mesh.uvs.empty() ? glm::vec2(0.0F) : mesh.uvs[i],
-            mesh.colours.empty() ? LinearRgb{1.0F, 1.0F, 1.0F} : mesh.colours[i]};
+            mesh.colours.empty() ? LinearRgb{1.0F, 1.0F, 1.0F} : mesh.colours[i],
+            mesh.tangents.empty() ? glm::vec4(0.0F) : mesh.tangents[i]};
 }
 
 // The Varying of each corner of a facet, from the vertex stage's per-vertex results or, for
@@ -83,7 +88,8 @@ std::array<typename Shader::Varying, 3> facet_varyings(const Shader& shader, con
 template <typename Shader>
 typename Shader::Varying vertex_varying(const Shader& shader, const Mesh& mesh, std::size_t i) {
     return shader.vertex({mesh.positions[i], mesh.normals[i], mesh.uvs.empty() ? glm::vec2(0.0F) : mesh.uvs[i],
-                          mesh.colours.empty() ? LinearRgb{1.0F, 1.0F, 1.0F} : mesh.colours[i]});
+                          mesh.colours.empty() ? LinearRgb{1.0F, 1.0F, 1.0F} : mesh.colours[i],
+                          mesh.tangents.empty() ? glm::vec4(0.0F) : mesh.tangents[i]});
 }
 
 // Whether a triangle's corners leave every pixel centre of a band of rows above or below them,

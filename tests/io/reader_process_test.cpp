@@ -162,3 +162,26 @@ TEST(ReaderProcess, TheServiceForksReadersThatGiveWhatADirectChildGives) {
     through.limits.max_memory = std::uint64_t{1} << 10;
     EXPECT_THROW((void)raster::read_model(obj, through), std::runtime_error);
 }
+
+// A normal-mapped part's tangents come back from the reader process as they were, and a count
+// that does not match the positions is refused.
+TEST(ReaderProcess, TangentsCrossTheWireExactlyAndAWrongCountIsRefused) {
+    raster::Model model;
+    model.parts.emplace_back();
+    raster::Mesh& mesh = model.parts.back().mesh;
+    mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    mesh.normals.assign(3, glm::vec3(0, 0, -1));
+    mesh.uvs = {{0, 0}, {1, 0}, {0, 1}};
+    mesh.tangents = {{1, 0, 0, -1}, {0.6F, 0.8F, 0, 1}, {0, 1, 0, -1}};
+    mesh.facets.push_back({{0, 2, 1}, glm::vec3(0, 0, -1)});
+    std::vector<std::uint8_t> bytes;
+    raster::detail::append_model_wire(model, bytes);
+    EXPECT_LE(bytes.size(), raster::detail::model_wire_size(model));
+    const raster::Model carried = raster::detail::model_from_wire(bytes);
+    ASSERT_EQ(carried.parts.size(), 1U);
+    EXPECT_EQ(carried.parts[0].mesh.tangents, mesh.tangents);
+    mesh.tangents.pop_back();
+    bytes.clear();
+    raster::detail::append_model_wire(model, bytes);
+    EXPECT_THROW((void)raster::detail::model_from_wire(bytes), std::runtime_error);
+}

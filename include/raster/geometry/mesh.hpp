@@ -11,6 +11,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 namespace raster {
 
@@ -43,6 +44,9 @@ struct Mesh {
     // same vertex arrays (doc/conventions.md#points-and-lines); empty for a surface alone.
     std::vector<std::uint32_t> points{};
     std::vector<std::array<std::uint32_t, 2>> segments{};
+    // Empty, or one per position for a normal map: xyz the direction u grows in, w = ±1 with
+    // w (normal × tangent) the direction v grows in (doc/conventions.md#normal-maps).
+    std::vector<glm::vec4> tangents{};
 };
 
 // The unit vector along v, or zero when v has no usable direction (zero, NaN, infinite).
@@ -63,8 +67,9 @@ struct Mesh {
                                       std::uint32_t c, glm::vec3 inside);
 
 // The mesh moved by `model`: positions as points, normals by the inverse transpose of the
-// linear part and renormalised, so non-uniform scale keeps them perpendicular to the surface.
-// A mirroring model (negative determinant) keeps facets clockwise from outside.
+// linear part and renormalised, so non-uniform scale keeps them perpendicular to the surface;
+// tangents as directions by the linear part. A mirroring model (negative determinant) keeps
+// facets clockwise from outside and turns each tangent's w round.
 [[nodiscard]] Mesh posed(const Mesh& mesh, const glm::mat4& model);
 
 // Which normals posed() moves: a shader lit per facet never reads the vertex normals, a smooth

@@ -53,7 +53,8 @@ inline constexpr const char* kNothingToDraw = "nothing to draw: no faces, points
 // into parts). Only a closed part's back faces may be culled unseen.
 [[nodiscard]] std::vector<bool> open_parts(const Model& model);
 // The mesh with each facet also turned to face the other way, its corners' normals flipped:
-// an open surface (a leaf, a plane, a lone triangle) drawn and lit from both sides.
+// an open surface (a leaf, a plane, a lone triangle) drawn and lit from both sides; the copy's
+// tangent frames turned round too, so a normal map's normals are the front's turned round.
 [[nodiscard]] Mesh both_sides(const Mesh& mesh);
 
 // The smallest axis-aligned box around every vertex the facets, points and lines use, and the

@@ -6,19 +6,21 @@
 #include <concepts>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 // What the rasterizer asks of a shader (doc/conventions.md#shading): vertex() turns a corner
 // into a Varying, which the rasterizer interpolates across the triangle, and pixel() turns the
 // interpolated Varying into a colour. Shaders depend on this header; the rasterizer on no shader.
 namespace raster {
 
-// What the vertex stage sees of one corner, in world space, with its texture coordinate and
-// its colour (white for a mesh without vertex colours).
+// What the vertex stage sees of one corner, in world space, with its texture coordinate, its
+// colour (white for a mesh without vertex colours) and its tangent (zero for a mesh without).
 struct Corner {
     glm::vec3 position;
     glm::vec3 normal;
     glm::vec2 uv{0.0F};
     LinearRgb colour{1.0F, 1.0F, 1.0F};
+    glm::vec4 tangent{0.0F};
 };
 
 // A value the rasterizer can interpolate: v0 + w1 (v1 - v0) + w2 (v2 - v0).
