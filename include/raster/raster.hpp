@@ -17,6 +17,7 @@
 #include <raster/geometry/mesh.hpp>
 #include <raster/geometry/primitives.hpp>
 #include <raster/geometry/shapes.hpp>
+#include <raster/geometry/tangents.hpp>
 
 #include <raster/camera/ortho_camera.hpp>
 #include <raster/camera/perspective_camera.hpp>

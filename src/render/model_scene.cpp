@@ -1,5 +1,7 @@
 #include <raster/render/model_scene.hpp>
 
+#include <raster/geometry/tangents.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -8,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -42,6 +45,24 @@ std::string shown(double value) {
     return text;
 }
 
+// The part's mesh, with tangents made from its texture coordinates where its normal map needs
+// them and the file gave none, for the whole part or for some vertices (doc/conventions.md#normal-maps).
+Mesh with_tangents(const ModelPart& part) {
+    Mesh mesh = part.mesh;
+    if (!part.metallic_roughness || !part.metallic_roughness->normal_map) return mesh;
+    if (mesh.tangents.size() != mesh.positions.size()) {
+        mesh.tangents = tangents_from_uvs(mesh);
+        return mesh;
+    }
+    const auto none = [](const glm::vec4& t) { return glm::vec3(t) == glm::vec3(0.0F); };
+    if (std::none_of(mesh.tangents.begin(), mesh.tangents.end(), none)) return mesh;
+    const std::vector<glm::vec4> made = tangents_from_uvs(mesh);
+    for (std::size_t i = 0; i < made.size(); ++i) {
+        if (none(mesh.tangents[i])) mesh.tangents[i] = made[i];
+    }
+    return mesh;
+}
+
 // The lens limits of PerspectiveCamera, in unit-sphere distances.
 constexpr double kNearest = 1e-18, kFarthest = 1e18;
 
@@ -64,7 +85,7 @@ ModelStage::ModelStage(std::shared_ptr<const Model> model, const ModelView& view
     for (std::size_t i = 0; i < model_->parts.size(); ++i) {
         const ModelPart& part = model_->parts[i];
         const bool both = view.cull == Culling::none || (view.cull == Culling::automatic && open[i]);
-        auto mesh = std::make_shared<Mesh>(both ? both_sides(part.mesh) : part.mesh);
+        auto mesh = std::make_shared<Mesh>(both ? both_sides(with_tangents(part)) : with_tangents(part));
         for (glm::vec3& p : mesh->positions) p = glm::vec3(unit_from_world(glm::dvec3(p)));
         meshes_.push_back(std::move(mesh));
     }
