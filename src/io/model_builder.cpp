@@ -31,8 +31,14 @@ glm::vec3 unit_of(glm::dvec3 v) {
 // smoothing compares every pair, and a fan of thousands would take quadratic time.
 constexpr std::size_t kMaxSmoothedNeighbours = 64;
 
-// A vertex of the output: one position with one normal, one texture coordinate and one colour.
-using VertexKey = std::tuple<std::int64_t, std::uint32_t, std::uint32_t, std::uint32_t, std::int64_t, std::int64_t>;
+// A vertex of the output: one position with one normal, texture coordinate, colour and tangent.
+using VertexKey =
+    std::tuple<std::int64_t, std::uint32_t, std::uint32_t, std::uint32_t, std::int64_t, std::int64_t, std::int64_t>;
+
+// Which of the optional per-vertex arrays a material's mesh has: any corner of it that has one gives it to all.
+struct VertexArrays {
+    bool uvs = false, colours = false, tangents = false;
+};
 
 std::uint32_t bits_of(float value) {
     std::uint32_t bits = 0;
@@ -46,17 +52,20 @@ glm::vec3 file_normal(const PolygonSoup& soup, const SoupCorner& corner) {
                                      : glm::vec3(0.0F);
 }
 
-// Appends the corner's position, `normal`, and its texture coordinate and colour when the mesh has them.
-void push_vertex(Mesh& mesh, const PolygonSoup& soup, const SoupCorner& corner, glm::vec3 normal, bool with_uvs,
-                 bool with_colours) {
+// Appends the corner's position, `normal`, and its texture coordinate, colour and tangent when the mesh has them.
+void push_vertex(Mesh& mesh, const PolygonSoup& soup, const SoupCorner& corner, glm::vec3 normal, VertexArrays with) {
     mesh.positions.push_back(soup.positions[static_cast<std::size_t>(corner.position)]);
     mesh.normals.push_back(normal);
-    if (with_uvs)
+    if (with.uvs)
         mesh.uvs.push_back(corner.uv != kNoIndex ? soup.uvs[static_cast<std::size_t>(corner.uv)] : glm::vec2(0.0F));
     // A corner without a colour in a part with colours shows the material as it is.
-    if (with_colours) {
+    if (with.colours) {
         mesh.colours.push_back(corner.colour != kNoIndex ? soup.colours[static_cast<std::size_t>(corner.colour)]
                                                          : LinearRgb{1.0F, 1.0F, 1.0F});
+    }
+    if (with.tangents) {  // zero where a corner has none: the shader then falls back to the cotangent frame
+        mesh.tangents.push_back(corner.tangent != kNoIndex ? soup.tangents[static_cast<std::size_t>(corner.tangent)]
+                                                           : glm::vec4(0.0F));
     }
 }
 
@@ -102,10 +111,12 @@ std::vector<std::pair<int, Mesh>> meshes_by_material(const PolygonSoup& soup, do
 
     std::map<int, Mesh> meshes;
     std::map<int, std::map<VertexKey, std::uint32_t>> vertices;
-    std::map<int, bool> textured, coloured;
+    std::map<int, VertexArrays> arrays;
     const auto note_corner = [&](const SoupCorner& corner, int material) {
-        if (corner.uv != kNoIndex) textured[material] = true;
-        if (corner.colour != kNoIndex) coloured[material] = true;
+        VertexArrays& with = arrays[material];
+        with.uvs = with.uvs || corner.uv != kNoIndex;
+        with.colours = with.colours || corner.colour != kNoIndex;
+        with.tangents = with.tangents || corner.tangent != kNoIndex;
     };
     for (const SoupTriangle& triangle : soup.triangles) {
         for (const SoupCorner& corner : triangle.corners) note_corner(corner, triangle.material);
@@ -117,10 +128,10 @@ std::vector<std::pair<int, Mesh>> meshes_by_material(const PolygonSoup& soup, do
     // A vertex of `material`'s mesh with `normal`: shared with any other corner that has all its attributes.
     const auto vertex_of = [&](const SoupCorner& corner, glm::vec3 normal, int material) {
         Mesh& mesh = meshes[material];
-        const VertexKey key{corner.position,   bits_of(normal.x), bits_of(normal.y),
-                            bits_of(normal.z), corner.uv,         corner.colour};
+        const VertexKey key{corner.position, bits_of(normal.x), bits_of(normal.y), bits_of(normal.z),
+                            corner.uv,       corner.colour,     corner.tangent};
         const auto [at, added] = vertices[material].try_emplace(key, static_cast<std::uint32_t>(mesh.positions.size()));
-        if (added) push_vertex(mesh, soup, corner, normal, textured[material], coloured[material]);
+        if (added) push_vertex(mesh, soup, corner, normal, arrays[material]);
         return at->second;
     };
     for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
@@ -139,16 +150,15 @@ std::vector<std::pair<int, Mesh>> meshes_by_material(const PolygonSoup& soup, do
     // Every point is a vertex of its own: a cloud of millions would only slow a shared index down.
     Mesh* cloud = nullptr;  // the last point's mesh: a cloud of one material looks it up once
     int cloud_material = 0;
-    bool with_uvs = false, with_colours = false;
+    VertexArrays with;
     for (const SoupPoint& point : soup.points) {
         if (cloud == nullptr || point.material != cloud_material) {
             cloud_material = point.material;
             cloud = &meshes[cloud_material];
-            with_uvs = textured[cloud_material];
-            with_colours = coloured[cloud_material];
+            with = arrays[cloud_material];
         }
         cloud->points.push_back(static_cast<std::uint32_t>(cloud->positions.size()));
-        push_vertex(*cloud, soup, point.corner, file_normal(soup, point.corner), with_uvs, with_colours);
+        push_vertex(*cloud, soup, point.corner, file_normal(soup, point.corner), with);
     }
     for (const SoupSegment& segment : soup.segments) {
         const std::uint32_t a = vertex_of(segment.ends[0], file_normal(soup, segment.ends[0]), segment.material);

@@ -10,7 +10,7 @@
 #include <glm/vec3.hpp>
 
 // Indexed meshes from a model file's triangles, whose corners index positions, normals,
-// texture coordinates and colours separately (as OBJ does), with normals made where the file has none.
+// texture coordinates, colours and tangents separately (as OBJ does), with normals made where the file has none.
 namespace raster::detail {
 
 inline constexpr std::int64_t kNoIndex = -1;
@@ -20,6 +20,7 @@ struct SoupCorner {
     std::int64_t normal = kNoIndex;
     std::int64_t uv = kNoIndex;
     std::int64_t colour = kNoIndex;
+    std::int64_t tangent = kNoIndex;  // into PolygonSoup::tangents, in raster's world (doc/conventions.md#normal-maps)
 };
 
 // Corners clockwise seen from outside, in raster's world; every index valid or kNoIndex.
@@ -43,6 +44,7 @@ struct PolygonSoup {
     std::vector<glm::vec3> normals;
     std::vector<glm::vec2> uvs;
     std::vector<LinearRgb> colours;  // in linear light
+    std::vector<glm::vec4> tangents{};
     std::vector<SoupTriangle> triangles;
     std::vector<SoupPoint> points{};
     std::vector<SoupSegment> segments{};

@@ -109,11 +109,15 @@ private:
         const auto first = static_cast<std::int64_t>(soup_.positions.size());
         const bool has_normals = mesh.mNormals != nullptr, has_uvs = mesh.mTextureCoords[0] != nullptr;
         const bool has_colours = mesh.mColors[0] != nullptr;
-        // Normals, texture coordinates and colours are kept one per position: meshes without them pad.
+        const bool has_tangents = mesh.mTangents != nullptr && has_normals && has_uvs;
+        // Normals, texture coordinates, colours and tangents are kept one per position: meshes without them pad.
         if (has_normals) soup_.normals.resize(soup_.positions.size(), glm::vec3(0.0F));
         if (has_uvs) soup_.uvs.resize(soup_.positions.size(), glm::vec2(0.0F));
         if (has_colours) soup_.colours.resize(soup_.positions.size(), LinearRgb{1.0F, 1.0F, 1.0F});
+        if (has_tangents) soup_.tangents.resize(soup_.positions.size(), glm::vec4(0.0F));
         const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(glm::dmat3(world)));
+        // Each mirror turns a tangent's handedness: the node's, if its matrix mirrors, and the z mirror into our world.
+        const double handedness = glm::determinant(glm::dmat3(world)) < 0.0 ? 1.0 : -1.0;
         soup_.positions.reserve(soup_.positions.size() + mesh.mNumVertices);
         for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
             const aiVector3D& p = mesh.mVertices[v];
@@ -122,6 +126,7 @@ private:
                 if (has_normals) soup_.normals.emplace_back(0.0F);
                 if (has_uvs) soup_.uvs.emplace_back(0.0F);
                 if (has_colours) soup_.colours.push_back({1.0F, 1.0F, 1.0F});
+                if (has_tangents) soup_.tangents.emplace_back(0.0F);
                 continue;
             }
             const glm::dvec3 placed = glm::dvec3(world * glm::dvec4(p.x, p.y, p.z, 1.0));
@@ -140,6 +145,7 @@ private:
                 soup_.colours.push_back(
                     {linear_channel(c.r, colours_), linear_channel(c.g, colours_), linear_channel(c.b, colours_)});
             }
+            if (has_tangents) soup_.tangents.push_back(tangent_of(mesh, v, world, handedness));
         }
         const auto corner_at = [&](unsigned index) {
             if (index >= mesh.mNumVertices) {
@@ -147,7 +153,8 @@ private:
                                          std::to_string(mesh.mNumVertices));
             }
             const std::int64_t at = first + index;
-            return SoupCorner{at, has_normals ? at : kNoIndex, has_uvs ? at : kNoIndex, has_colours ? at : kNoIndex};
+            return SoupCorner{at, has_normals ? at : kNoIndex, has_uvs ? at : kNoIndex, has_colours ? at : kNoIndex,
+                              has_tangents ? at : kNoIndex};
         };
         const auto drawable = [&](const SoupCorner& corner) {
             if (std::isfinite(soup_.positions[static_cast<std::size_t>(corner.position)].x)) return true;
@@ -194,6 +201,24 @@ private:
         if (!soup_.normals.empty()) soup_.normals.resize(soup_.positions.size(), glm::vec3(0.0F));
         if (!soup_.uvs.empty()) soup_.uvs.resize(soup_.positions.size(), glm::vec2(0.0F));
         if (!soup_.colours.empty()) soup_.colours.resize(soup_.positions.size(), LinearRgb{1.0F, 1.0F, 1.0F});
+        if (!soup_.tangents.empty()) soup_.tangents.resize(soup_.positions.size(), glm::vec4(0.0F));
+    }
+
+    // The file's tangent at vertex v moved by the node's matrix into raster's world; assimp gives glTF's w as
+    // the bitangent w (n x t), read back from its sign. Zero (no tangent) where the file's is not finite.
+    static glm::vec4 tangent_of(const aiMesh& mesh, unsigned v, const glm::dmat4& world, double handedness) {
+        const aiVector3D& t = mesh.mTangents[v];
+        if (!finite(t)) return glm::vec4(0.0F);
+        double w = 1.0;
+        if (mesh.mBitangents != nullptr && finite(mesh.mBitangents[v])) {
+            const aiVector3D& n = mesh.mNormals[v];
+            const aiVector3D& b = mesh.mBitangents[v];
+            const glm::dvec3 across = glm::cross(glm::dvec3(n.x, n.y, n.z), glm::dvec3(t.x, t.y, t.z));
+            if (glm::dot(across, glm::dvec3(b.x, b.y, b.z)) < 0.0) w = -1.0;
+        }
+        const glm::dvec3 moved = glm::dmat3(world) * glm::dvec3(t.x, t.y, t.z);
+        const glm::vec3 unit = unit_or_zero(glm::vec3(glm::dvec3(moved.x, moved.y, -moved.z)));
+        return glm::dot(unit, unit) > 0.0F ? glm::vec4(unit, static_cast<float>(w * handedness)) : glm::vec4(0.0F);
     }
 
     std::shared_ptr<const Texture> map_of(const aiMaterial& m) {
@@ -282,6 +307,8 @@ void model_from_scene(const aiScene& scene, const std::filesystem::path& path, c
                     for (const GltfMap& map : kGltfMaps) (*part.metallic_roughness).*map.slot = nullptr;
                 }
             }
+            // Tangents serve a normal map alone: a part without one does not carry them.
+            if (!part.metallic_roughness || !part.metallic_roughness->normal_map) part.mesh.tangents = {};
             model.parts.push_back(std::move(part));
         }
     } catch (const std::runtime_error& problem) {
