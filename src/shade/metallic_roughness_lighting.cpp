@@ -22,7 +22,7 @@ bool usable(const PointLight& light) noexcept {
 // The tangent-space normal `mapped` turned into the world by the frame that the surface's
 // changes of position and texture coordinate per pixel define (Schüler's cotangent frame, which
 // carries the mirror sign of the mapping with it); the surface normal where there is no frame.
-glm::vec3 mapped_normal(glm::vec3 n, glm::vec3 mapped, const MaterialPoint& p) noexcept {
+glm::vec3 cotangent_mapped(glm::vec3 n, glm::vec3 mapped, const MaterialPoint& p) noexcept {
     const glm::vec3 dp1 = p.position_per_x, dp2 = p.position_per_y;
     const glm::vec2 duv1 = p.footprint.per_pixel_x, duv2 = p.footprint.per_pixel_y;
     const glm::vec3 dp2perp = glm::cross(dp2, n), dp1perp = glm::cross(n, dp1);
@@ -32,6 +32,18 @@ glm::vec3 mapped_normal(glm::vec3 n, glm::vec3 mapped, const MaterialPoint& p) n
     if (!(longest > 0.0F) || !std::isfinite(longest)) return n;
     const float scale = 1.0F / std::sqrt(longest);
     const glm::vec3 turned = unit_or_zero(t * (mapped.x * scale) + b * (mapped.y * scale) + n * mapped.z);
+    return glm::dot(turned, turned) > 0.0F ? turned : n;
+}
+
+// `mapped` turned into the world by the interpolated vertex tangent, made perpendicular to the
+// unit normal n again at this pixel, and the bitangent w (n x t); the cotangent frame where the
+// tangent has no direction apart from n (doc/conventions.md#normal-maps).
+glm::vec3 mapped_normal(glm::vec3 n, glm::vec3 mapped, const MaterialPoint& p) noexcept {
+    const glm::vec3 along(p.tangent);
+    const glm::vec3 t = unit_or_zero(along - n * glm::dot(n, along));
+    if (!(glm::dot(t, t) > 0.0F)) return cotangent_mapped(n, mapped, p);
+    const glm::vec3 b = glm::cross(n, t) * (p.tangent.w < 0.0F ? -1.0F : 1.0F);
+    const glm::vec3 turned = unit_or_zero(t * mapped.x + b * mapped.y + n * mapped.z);
     return glm::dot(turned, turned) > 0.0F ? turned : n;
 }
 

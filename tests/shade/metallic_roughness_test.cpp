@@ -179,6 +179,34 @@ TEST(MetallicRoughness, NormalMapLeansTheNormalAlongItsTangentFrame) {
     EXPECT_NEAR(MetallicRoughnessLighting(m, {}, nullptr, {}, {}, kNormal).sample(p).normal.x, -0.71F, 0.02F);
 }
 
+// A vertex tangent decides the frame where there is one: turned a quarter, the lean turns with
+// it, whatever the screen derivatives say; w turns the bitangent, and a tangent along the normal
+// leaves the screen's frame in charge.
+TEST(MetallicRoughness, NormalMapFollowsTheVertexTangentTurnedAQuarter) {
+    MetallicRoughness m;
+    m.normal_map = one_texel(218, 128, 218, raster::TexelEncoding::linear);  // about (0.71, 0, 0.71): toward +u
+    MaterialPoint p = facing(kNormal);
+    p.position_per_x = {1, 0, 0}, p.position_per_y = {0, 1, 0};
+    p.footprint = {{0.1F, 0.0F}, {0.0F, 0.1F}};  // the screen says u grows along +x
+    const MetallicRoughnessLighting lighting(m, {}, nullptr, {}, {}, kNormal);
+    p.tangent = {2, 0, 0.5F, 1};  // any length, a little off the surface: made perpendicular at the pixel
+    EXPECT_NEAR(lighting.sample(p).normal.x, 0.71F, 0.02F);
+    p.tangent = {0, 1, 0, 1};  // turned a quarter
+    glm::vec3 n = lighting.sample(p).normal;
+    EXPECT_NEAR(n.x, 0.0F, 0.02F);
+    EXPECT_NEAR(n.y, 0.71F, 0.02F);
+    p.tangent = {0, 0, 3, 1};  // along the normal: no direction in the surface
+    EXPECT_NEAR(lighting.sample(p).normal.x, 0.71F, 0.02F);
+    m.normal_map = one_texel(128, 218, 218, raster::TexelEncoding::linear);  // toward +v: the bitangent
+    const MetallicRoughnessLighting toward_v(m, {}, nullptr, {}, {}, kNormal);
+    p.tangent = {1, 0, 0, 1};  // w (n x t) = +y
+    EXPECT_NEAR(toward_v.sample(p).normal.y, 0.71F, 0.02F);
+    p.tangent.w = -1.0F;
+    n = toward_v.sample(p).normal;
+    EXPECT_NEAR(n.y, -0.71F, 0.02F);
+    EXPECT_NEAR(n.x, 0.0F, 0.02F);
+}
+
 TEST(MetallicRoughness, ZeroVectorNormalTexelLeavesTheSurfaceNormal) {
     MetallicRoughness m;
     m.normal_map = one_texel(128, 128, 128, raster::TexelEncoding::linear);

@@ -12,14 +12,16 @@
 #include <vector>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 // A metallic-roughness surface lit by directional and point lights through glTF's BRDF and by
 // its surroundings through the split sum (doc/conventions.md#metallic-roughness).
 namespace raster {
 
 // What one pixel of the surface knows: its world position and normal, its texture coordinate,
-// its vertex colour, and how position and texture coordinate change per pixel step (for the
-// mip level and for the normal map's tangent frame).
+// its vertex colour, how position and texture coordinate change per pixel step (for the mip
+// level, and for the normal map's tangent frame where there is no tangent), and the interpolated
+// vertex tangent (doc/conventions.md#normal-maps).
 struct MaterialPoint {
     glm::vec3 position;
     glm::vec3 normal;  // any length; zero for "no normal": emissive light only
@@ -27,6 +29,7 @@ struct MaterialPoint {
     LinearRgb tint{1.0F, 1.0F, 1.0F};
     glm::vec3 position_per_x{0.0F}, position_per_y{0.0F};
     UvFootprint footprint{};
+    glm::vec4 tangent{0.0F};  // any length, w's sign the handedness; zero for none
 };
 
 // The material as read at one point, its maps applied to its factors.
