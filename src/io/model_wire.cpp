@@ -13,7 +13,7 @@
 namespace raster::detail {
 namespace {
 
-constexpr std::uint32_t kWireMark = 0x52574d31;  // "RWM1"
+constexpr std::uint32_t kWireMark = 0x52574d32;  // "RWM2": parts carry their Phong maps
 
 void write_mesh(WireWriter& out, const Mesh& mesh) {
     out.array(mesh.positions);
@@ -67,6 +67,11 @@ std::array<std::shared_ptr<const Texture>*, 5> maps_of(MetallicRoughness& m) {
     return {&m.base_colour_map, &m.metallic_roughness_map, &m.normal_map, &m.occlusion_map, &m.emissive_map};
 }
 
+std::array<const std::shared_ptr<const Texture>*, 3> maps_of(const PhongMaps& m) {
+    return {&m.specular, &m.emissive, &m.normal};
+}
+std::array<std::shared_ptr<const Texture>*, 3> maps_of(PhongMaps& m) { return {&m.specular, &m.emissive, &m.normal}; }
+
 }  // namespace
 
 std::size_t model_wire_size(const Model& model) noexcept {
@@ -84,6 +89,7 @@ std::size_t model_wire_size(const Model& model) noexcept {
                         texture->alpha_plane().size();
         };
         count(part.texture);
+        for (const auto* map : maps_of(part.phong_maps)) count(*map);
         if (part.metallic_roughness) {
             size += 128;
             for (const auto* map : maps_of(*part.metallic_roughness)) count(*map);
@@ -105,6 +111,7 @@ void append_model_wire(const Model& model, std::vector<std::uint8_t>& out) {
     };
     for (const ModelPart& part : model.parts) {
         number(part.texture);
+        for (const auto* map : maps_of(part.phong_maps)) number(*map);
         if (part.metallic_roughness) {
             for (const auto* map : maps_of(*part.metallic_roughness)) number(*map);
         }
@@ -131,6 +138,7 @@ void append_model_wire(const Model& model, std::vector<std::uint8_t>& out) {
         wire.value(static_cast<std::uint8_t>(part.material.shininess.has_value()));
         wire.value(part.material.shininess.value_or(0.0F));
         wire.value(part.texture ? numbers.at(part.texture.get()) : UINT32_MAX);
+        for (const auto* map : maps_of(part.phong_maps)) wire.value(*map ? numbers.at(map->get()) : UINT32_MAX);
         wire.value(static_cast<std::uint8_t>(part.sampler.filter));
         wire.value(static_cast<std::uint8_t>(part.sampler.wrap));
         wire.value(static_cast<std::uint8_t>(part.opacity.mode));
@@ -197,11 +205,14 @@ Model model_from_wire(std::span<const std::uint8_t> bytes) {
         const bool shiny = wire.value<std::uint8_t>() != 0;
         const auto shininess = wire.value<float>();
         if (shiny) part.material.shininess = shininess;
-        const auto texture = wire.value<std::uint32_t>();
-        if (texture != UINT32_MAX) {
-            if (texture >= textures.size()) WireReader::broken();
-            part.texture = textures[texture];
-        }
+        const auto texture_at = [&](std::shared_ptr<const Texture>& map) {
+            const auto at = wire.value<std::uint32_t>();
+            if (at == UINT32_MAX) return;
+            if (at >= textures.size()) WireReader::broken();
+            map = textures[at];
+        };
+        texture_at(part.texture);
+        for (auto* map : maps_of(part.phong_maps)) texture_at(*map);
         const auto filter = wire.value<std::uint8_t>();
         const auto wrap = wire.value<std::uint8_t>();
         if (filter > static_cast<std::uint8_t>(TextureFilter::trilinear) ||
@@ -220,12 +231,7 @@ Model model_from_wire(std::span<const std::uint8_t> bytes) {
             m.emissive = wire.value<LinearRgb>();
             for (float* factor : {&m.metallic, &m.roughness, &m.occlusion_strength, &m.normal_scale})
                 *factor = wire.value<float>();
-            for (auto* map : maps_of(m)) {
-                const auto at = wire.value<std::uint32_t>();
-                if (at == UINT32_MAX) continue;
-                if (at >= textures.size()) WireReader::broken();
-                *map = textures[at];
-            }
+            for (auto* map : maps_of(m)) texture_at(*map);
         }
         model.parts.push_back(std::move(part));
     }
