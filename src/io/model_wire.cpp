@@ -8,6 +8,7 @@
 #include <map>
 #include <memory>
 #include <stdexcept>
+#include <type_traits>
 #include <utility>
 
 namespace raster::detail {
@@ -59,18 +60,16 @@ Mesh read_mesh(WireReader& in) {
     return mesh;
 }
 
-// A physically based material's maps, in the order the wire carries them.
-std::array<const std::shared_ptr<const Texture>*, 5> maps_of(const MetallicRoughness& m) {
-    return {&m.base_colour_map, &m.metallic_roughness_map, &m.normal_map, &m.occlusion_map, &m.emissive_map};
+// A material's maps, in the order the wire carries them; `Material` const or not.
+template <typename Material>
+auto maps_of(Material& m) {
+    if constexpr (std::is_same_v<std::remove_const_t<Material>, PhongMaps>) {
+        return std::array{&m.specular, &m.emissive, &m.normal};
+    } else {
+        return std::array{&m.base_colour_map, &m.metallic_roughness_map, &m.normal_map, &m.occlusion_map,
+                          &m.emissive_map};
+    }
 }
-std::array<std::shared_ptr<const Texture>*, 5> maps_of(MetallicRoughness& m) {
-    return {&m.base_colour_map, &m.metallic_roughness_map, &m.normal_map, &m.occlusion_map, &m.emissive_map};
-}
-
-std::array<const std::shared_ptr<const Texture>*, 3> maps_of(const PhongMaps& m) {
-    return {&m.specular, &m.emissive, &m.normal};
-}
-std::array<std::shared_ptr<const Texture>*, 3> maps_of(PhongMaps& m) { return {&m.specular, &m.emissive, &m.normal}; }
 
 }  // namespace
 
@@ -207,9 +206,8 @@ Model model_from_wire(std::span<const std::uint8_t> bytes) {
         if (shiny) part.material.shininess = shininess;
         const auto texture_at = [&](std::shared_ptr<const Texture>& map) {
             const auto at = wire.value<std::uint32_t>();
-            if (at == UINT32_MAX) return;
-            if (at >= textures.size()) WireReader::broken();
-            map = textures[at];
+            if (at != UINT32_MAX && at >= textures.size()) WireReader::broken();
+            if (at != UINT32_MAX) map = textures[at];
         };
         texture_at(part.texture);
         for (auto* map : maps_of(part.phong_maps)) texture_at(*map);
