@@ -32,10 +32,13 @@
 #include <raster/shade/gltf_brdf.hpp>
 #include <raster/shade/intensity_lighting.hpp>
 #include <raster/shade/linear_lighting.hpp>
+#include <raster/shade/mapped_phong_shader.hpp>
 #include <raster/shade/metallic_roughness.hpp>
 #include <raster/shade/metallic_roughness_lighting.hpp>
 #include <raster/shade/metallic_roughness_shaders.hpp>
+#include <raster/shade/normal_map.hpp>
 #include <raster/shade/opacity.hpp>
+#include <raster/shade/phong_maps.hpp>
 #include <raster/shade/shaders.hpp>
 #include <raster/shade/split_sum_table.hpp>
 #include <raster/shade/surroundings.hpp>

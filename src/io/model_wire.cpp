@@ -8,12 +8,13 @@
 #include <map>
 #include <memory>
 #include <stdexcept>
+#include <type_traits>
 #include <utility>
 
 namespace raster::detail {
 namespace {
 
-constexpr std::uint32_t kWireMark = 0x52574d31;  // "RWM1"
+constexpr std::uint32_t kWireMark = 0x52574d32;  // "RWM2": parts carry their Phong maps
 
 void write_mesh(WireWriter& out, const Mesh& mesh) {
     out.array(mesh.positions);
@@ -61,12 +62,15 @@ Mesh read_mesh(WireReader& in) {
     return mesh;
 }
 
-// A physically based material's maps, in the order the wire carries them.
-std::array<const std::shared_ptr<const Texture>*, 5> maps_of(const MetallicRoughness& m) {
-    return {&m.base_colour_map, &m.metallic_roughness_map, &m.normal_map, &m.occlusion_map, &m.emissive_map};
-}
-std::array<std::shared_ptr<const Texture>*, 5> maps_of(MetallicRoughness& m) {
-    return {&m.base_colour_map, &m.metallic_roughness_map, &m.normal_map, &m.occlusion_map, &m.emissive_map};
+// A material's maps, in the order the wire carries them; `Material` const or not.
+template <typename Material>
+auto maps_of(Material& m) {
+    if constexpr (std::is_same_v<std::remove_const_t<Material>, PhongMaps>) {
+        return std::array{&m.specular, &m.emissive, &m.normal};
+    } else {
+        return std::array{&m.base_colour_map, &m.metallic_roughness_map, &m.normal_map, &m.occlusion_map,
+                          &m.emissive_map};
+    }
 }
 
 }  // namespace
@@ -87,6 +91,7 @@ std::size_t model_wire_size(const Model& model) noexcept {
                         texture->alpha_plane().size();
         };
         count(part.texture);
+        for (const auto* map : maps_of(part.phong_maps)) count(*map);
         if (part.metallic_roughness) {
             size += 128;
             for (const auto* map : maps_of(*part.metallic_roughness)) count(*map);
@@ -108,6 +113,7 @@ void append_model_wire(const Model& model, std::vector<std::uint8_t>& out) {
     };
     for (const ModelPart& part : model.parts) {
         number(part.texture);
+        for (const auto* map : maps_of(part.phong_maps)) number(*map);
         if (part.metallic_roughness) {
             for (const auto* map : maps_of(*part.metallic_roughness)) number(*map);
         }
@@ -134,6 +140,7 @@ void append_model_wire(const Model& model, std::vector<std::uint8_t>& out) {
         wire.value(static_cast<std::uint8_t>(part.material.shininess.has_value()));
         wire.value(part.material.shininess.value_or(0.0F));
         wire.value(part.texture ? numbers.at(part.texture.get()) : UINT32_MAX);
+        for (const auto* map : maps_of(part.phong_maps)) wire.value(*map ? numbers.at(map->get()) : UINT32_MAX);
         wire.value(static_cast<std::uint8_t>(part.sampler.filter));
         wire.value(static_cast<std::uint8_t>(part.sampler.wrap));
         wire.value(static_cast<std::uint8_t>(part.opacity.mode));
@@ -200,11 +207,13 @@ Model model_from_wire(std::span<const std::uint8_t> bytes) {
         const bool shiny = wire.value<std::uint8_t>() != 0;
         const auto shininess = wire.value<float>();
         if (shiny) part.material.shininess = shininess;
-        const auto texture = wire.value<std::uint32_t>();
-        if (texture != UINT32_MAX) {
-            if (texture >= textures.size()) WireReader::broken();
-            part.texture = textures[texture];
-        }
+        const auto texture_at = [&](std::shared_ptr<const Texture>& map) {
+            const auto at = wire.value<std::uint32_t>();
+            if (at != UINT32_MAX && at >= textures.size()) WireReader::broken();
+            if (at != UINT32_MAX) map = textures[at];
+        };
+        texture_at(part.texture);
+        for (auto* map : maps_of(part.phong_maps)) texture_at(*map);
         const auto filter = wire.value<std::uint8_t>();
         const auto wrap = wire.value<std::uint8_t>();
         if (filter > static_cast<std::uint8_t>(TextureFilter::trilinear) ||
@@ -223,12 +232,7 @@ Model model_from_wire(std::span<const std::uint8_t> bytes) {
             m.emissive = wire.value<LinearRgb>();
             for (float* factor : {&m.metallic, &m.roughness, &m.occlusion_strength, &m.normal_scale})
                 *factor = wire.value<float>();
-            for (auto* map : maps_of(m)) {
-                const auto at = wire.value<std::uint32_t>();
-                if (at == UINT32_MAX) continue;
-                if (at >= textures.size()) WireReader::broken();
-                *map = textures[at];
-            }
+            for (auto* map : maps_of(m)) texture_at(*map);
         }
         model.parts.push_back(std::move(part));
     }

@@ -23,7 +23,9 @@ template <typename Camera>
     if (!depth_test || scene.objects.size() < 2) return false;
     bool per_pixel = false;
     for (const SceneObject& object : scene.objects) {
-        per_pixel = per_pixel || (object.mesh && (object.shading == ShadingMethod::phong || object.texture));
+        per_pixel =
+            per_pixel ||
+            (object.mesh && (object.shading == ShadingMethod::phong || object.texture || object.phong_maps.any()));
     }
     return per_pixel && screen_cover(scene, width, height) >= kDepthFirstCover;
 }

@@ -193,8 +193,8 @@ std::vector<SceneObject> ModelStage::objects(double turn) const {
         const ModelPart& part = model_->parts[i];
         const SurfaceMaterial material =
             part.metallic_roughness ? SurfaceMaterial{*part.metallic_roughness} : SurfaceMaterial{part.material};
-        objects.push_back(
-            {meshes_[i], turned, material, shading_, std::nullopt, part.texture, part.sampler, part.opacity});
+        objects.push_back({meshes_[i], turned, material, shading_, std::nullopt, part.texture, part.sampler,
+                           part.opacity, part.phong_maps});
     }
     return objects;
 }

@@ -27,7 +27,14 @@ BasicScene<Camera> flattened(BasicScene<Camera> scene) {
             material->diffuse = {material->diffuse.r * mean.r, material->diffuse.g * mean.g,
                                  material->diffuse.b * mean.b};
         }
+        if (auto* material = std::get_if<LinearMaterial>(&object.material)) {  // each map's mean times its factor
+            if (object.phong_maps.specular)
+                material->specular = material->specular * mean_colour(*object.phong_maps.specular);
+            if (object.phong_maps.emissive)
+                material->emissive = material->emissive * mean_colour(*object.phong_maps.emissive);
+        }
         object.texture = nullptr;
+        object.phong_maps = {};
         object.shading = ShadingMethod::flat;
     }
     return scene;
@@ -42,9 +49,11 @@ Rgb line_colour(const SceneObject& object) {
     }
     const auto& material = std::get<LinearMaterial>(object.material);
     const LinearRgb mean = object.texture ? mean_colour(*object.texture) : LinearRgb{1.0F, 1.0F, 1.0F};
-    return srgb_from_linear(LinearRgb{material.emissive.r + material.diffuse.r * mean.r,
-                                      material.emissive.g + material.diffuse.g * mean.g,
-                                      material.emissive.b + material.diffuse.b * mean.b});
+    const LinearRgb glow =
+        object.phong_maps.emissive ? mean_colour(*object.phong_maps.emissive) : LinearRgb{1.0F, 1.0F, 1.0F};
+    return srgb_from_linear(LinearRgb{material.emissive.r * glow.r + material.diffuse.r * mean.r,
+                                      material.emissive.g * glow.g + material.diffuse.g * mean.g,
+                                      material.emissive.b * glow.b + material.diffuse.b * mean.b});
 }
 
 // Halves up, as fills and lines round (doc/conventions.md#pixels); the clamp keeps int safe for orthographic ends far

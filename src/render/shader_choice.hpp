@@ -1,6 +1,7 @@
 #pragma once
 
 #include <raster/render/scene.hpp>
+#include <raster/shade/mapped_phong_shader.hpp>
 #include <raster/shade/metallic_roughness_shaders.hpp>
 #include <raster/shade/shaders.hpp>
 #include <raster/shade/textured_shaders.hpp>
@@ -57,6 +58,11 @@ std::size_t draw_shaded(const SceneObject& object, std::span<const DirectionalLi
     const LinearMaterial& material = std::get<LinearMaterial>(object.material);
     const LinearLighting lighting(material, lights, points, to_eye, eye, darkening);
     const DiffuseSource diffuse{material.diffuse, object.texture.get(), object.sampler};
+    if (object.phong_maps.any() && object.shading != ShadingMethod::unlit) {  // lit at every pixel
+        if (object.shading == ShadingMethod::flat)
+            return draw(MappedPhongFlatShader{&lighting, diffuse, &object.phong_maps});
+        return draw(MappedPhongSmoothShader{&lighting, diffuse, &object.phong_maps});
+    }
     if (!object.mesh->colours.empty()) {  // the corners' colours interpolated to every pixel
         switch (object.shading) {
         case ShadingMethod::flat: return draw(TintedFlatShader{&lighting, diffuse});

@@ -1,6 +1,7 @@
 #include <raster/geometry/mesh.hpp>
 #include <raster/shade/gltf_brdf.hpp>
 #include <raster/shade/metallic_roughness_lighting.hpp>
+#include <raster/shade/normal_map.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -17,34 +18,6 @@ bool usable(const PointLight& light) noexcept {
                         std::isfinite(f.quadratic);
     return finite && f.constant >= 0.0F && f.linear >= 0.0F && f.quadratic >= 0.0F &&
            (f.constant > 0.0F || f.linear > 0.0F || f.quadratic > 0.0F);
-}
-
-// The tangent-space normal `mapped` turned into the world by the frame that the surface's
-// changes of position and texture coordinate per pixel define (Schüler's cotangent frame, which
-// carries the mirror sign of the mapping with it); the surface normal where there is no frame.
-glm::vec3 cotangent_mapped(glm::vec3 n, glm::vec3 mapped, const MaterialPoint& p) noexcept {
-    const glm::vec3 dp1 = p.position_per_x, dp2 = p.position_per_y;
-    const glm::vec2 duv1 = p.footprint.per_pixel_x, duv2 = p.footprint.per_pixel_y;
-    const glm::vec3 dp2perp = glm::cross(dp2, n), dp1perp = glm::cross(n, dp1);
-    const glm::vec3 t = dp2perp * duv1.x + dp1perp * duv2.x;
-    const glm::vec3 b = dp2perp * duv1.y + dp1perp * duv2.y;
-    const float longest = std::max(glm::dot(t, t), glm::dot(b, b));
-    if (!(longest > 0.0F) || !std::isfinite(longest)) return n;
-    const float scale = 1.0F / std::sqrt(longest);
-    const glm::vec3 turned = unit_or_zero(t * (mapped.x * scale) + b * (mapped.y * scale) + n * mapped.z);
-    return glm::dot(turned, turned) > 0.0F ? turned : n;
-}
-
-// `mapped` turned into the world by the interpolated vertex tangent, made perpendicular to the
-// unit normal n again at this pixel, and the bitangent w (n x t); the cotangent frame where the
-// tangent has no direction apart from n (doc/conventions.md#normal-maps).
-glm::vec3 mapped_normal(glm::vec3 n, glm::vec3 mapped, const MaterialPoint& p) noexcept {
-    const glm::vec3 along(p.tangent);
-    const glm::vec3 t = unit_or_zero(along - n * glm::dot(n, along));
-    if (!(glm::dot(t, t) > 0.0F)) return cotangent_mapped(n, mapped, p);
-    const glm::vec3 b = glm::cross(n, t) * (p.tangent.w < 0.0F ? -1.0F : 1.0F);
-    const glm::vec3 turned = unit_or_zero(t * mapped.x + b * mapped.y + n * mapped.z);
-    return glm::dot(turned, turned) > 0.0F ? turned : n;
 }
 
 }  // namespace
@@ -82,11 +55,8 @@ MaterialSample MetallicRoughnessLighting::sample(const MaterialPoint& point) con
     if (m.occlusion_map) out.occlusion = 1.0F + m.occlusion_strength * (read(m.occlusion_map).r - 1.0F);
     if (m.emissive_map) out.emissive = out.emissive * read(m.emissive_map);
     if (m.normal_map && glm::dot(out.normal, out.normal) > 0.0F) {
-        const LinearRgb texel = read(m.normal_map);
-        const glm::vec3 mapped((texel.r * 2.0F - 1.0F) * m.normal_scale, (texel.g * 2.0F - 1.0F) * m.normal_scale,
-                               texel.b * 2.0F - 1.0F);
-        // A texel that is no direction (the zero vector, 128 128 128) leaves the surface's normal.
-        if (glm::dot(mapped, mapped) > 1e-4F) out.normal = mapped_normal(out.normal, mapped, point);
+        out.normal = normal_mapped(out.normal, read(m.normal_map), m.normal_scale, point.tangent, point.position_per_x,
+                                   point.position_per_y, point.footprint);
     }
     return out;
 }

@@ -5,6 +5,7 @@
 #include <raster/shade/linear_lighting.hpp>
 #include <raster/shade/metallic_roughness.hpp>
 #include <raster/shade/opacity.hpp>
+#include <raster/shade/phong_maps.hpp>
 #include <raster/shade/texture.hpp>
 
 #include <cstddef>
@@ -23,7 +24,8 @@ struct ModelPart {
     LinearMaterial material;
     std::shared_ptr<const Texture> texture{};  // the diffuse map, when it loaded
     Sampler sampler{};
-    Opacity opacity{};  // from MTL d and Tr, glTF alphaMode and base colour alpha
+    Opacity opacity{};       // from MTL d and Tr, glTF alphaMode and base colour alpha
+    PhongMaps phong_maps{};  // MTL map_Ks, map_Ke and bump, over `material`
     // A physically based material (glTF's, or an MTL's PBR fields), drawn in place of `material`
     // and `texture` when present (doc/conventions.md#metallic-roughness).
     std::optional<MetallicRoughness> metallic_roughness{};

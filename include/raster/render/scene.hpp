@@ -10,6 +10,7 @@
 #include <raster/shade/linear_lighting.hpp>
 #include <raster/shade/metallic_roughness.hpp>
 #include <raster/shade/opacity.hpp>
+#include <raster/shade/phong_maps.hpp>
 #include <raster/shade/surroundings.hpp>
 #include <raster/shade/texture.hpp>
 
@@ -45,6 +46,8 @@ struct SceneObject {
     Sampler sampler{};
     // Blend objects are drawn after every other, composited in depth order (doc/conventions.md#transparency).
     Opacity opacity{};
+    // A linear material's specular, emissive and normal maps; the other materials ignore them.
+    PhongMaps phong_maps{};
 };
 
 // How a mesh's points and segments are drawn (doc/conventions.md#points-and-lines): points as

@@ -1,26 +1,23 @@
-// The only file that includes tinyobjloader; stays whole so that the library stays in one room.
+// OBJ models through tinyobjloader, which only this folder includes; stays whole as the one path from text to parts.
 #include <raster/io/obj_file.hpp>
 
 #include "geometry/polygon_triangles.hpp"
-#include "io/alpha_reading.hpp"
 #include "io/input_stream.hpp"
 #include "io/model_builder.hpp"
-#include "io/named_path.hpp"
+#include "io/obj/material_libraries.hpp"
+#include "io/obj/mtl_material.hpp"
 #include "io/obj_survey.hpp"
 #include "io/obj_text.hpp"
 
 #include <raster/io/input_file.hpp>
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <map>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
-#include <system_error>
 #include <unordered_set>
 #include <vector>
 #include <tiny_obj_loader.h>
@@ -28,7 +25,8 @@
 namespace raster {
 
 using detail::load_failure;
-using detail::note_named;
+using detail::MaterialLibraries;
+using detail::MtlMaterials;
 using detail::rethrow_named;
 using detail::text_rules;
 
@@ -37,72 +35,6 @@ namespace {
 // A problem that stops the model: the caller prefixes the file's name.
 struct BadModel : std::runtime_error {
     using std::runtime_error::runtime_error;
-};
-
-// Reads each MTL file the OBJ names, from beside the OBJ (or from text given in memory), and
-// remembers which directory every material came from, for its texture paths.
-class MaterialLibraries final : public tinyobj::MaterialReader {
-public:
-    MaterialLibraries(std::filesystem::path directory, std::optional<std::string_view> text, std::string obj_name,
-                      const detail::ObjSurvey& survey, const ObjOptions& options)
-        : directory_(std::move(directory)), text_(text), obj_name_(std::move(obj_name)), survey_(survey),
-          options_(options) {}
-
-    bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
-                    std::map<std::string, int>* names, std::string*, std::string*) override {
-        const std::filesystem::path path =
-            text_ ? directory_ / name : detail::resolve_named_path(directory_, name, options_.confine);
-        std::string ignored_warnings, ignored_errors;  // LoadMtl's only warning is about d and Tr, both read anyway
-        if (text_) {
-            std::istringstream in{std::string(*text_)};
-            tinyobj::LoadMtl(names, materials, &in, &ignored_warnings, &ignored_errors);
-        } else {
-            note_named(sources_, path, "material library");
-            try {
-                InputFile file(path, text_rules("material library", "an MTL text file", options_.confine));
-                const std::string shown = printable(path.string());
-                for_each_line(file, shown, options_.max_line_bytes, [](std::string_view, std::size_t) {});
-                detail::InputStreamBuf buffer(file);
-                std::istream in(&buffer);
-                tinyobj::LoadMtl(names, materials, &in, &ignored_warnings, &ignored_errors);
-            } catch (const std::runtime_error& problem) {
-                if (failures_++ > 0) return false;  // one warning for the first; the count for the rest
-                const auto line = survey_.library_lines.find(name);
-                const std::string at =
-                    obj_name_ + (line != survey_.library_lines.end() ? ":" + std::to_string(line->second) : "") + ": ";
-                const std::string what = problem.what(), shown = printable(path.string());
-                // A line-cap refusal already names the library and its line.
-                first_failure_ =
-                    at + (what.starts_with(shown + ":") ? what : "material library '" + shown + "' " + what);
-                return false;
-            }
-        }
-        directories_.resize(materials->size(), path.parent_path());
-        return true;
-    }
-    [[nodiscard]] const std::filesystem::path& directory_of(std::size_t material) const {
-        return directories_.at(material);
-    }
-    // At most one warning, however many libraries failed.
-    [[nodiscard]] std::vector<std::string> warnings() const {
-        if (failures_ == 0) return {};
-        const std::string more =
-            failures_ > 1 ? " (and " + std::to_string(failures_ - 1) + " more material libraries)" : "";
-        return {first_failure_ + more + "; drawing the default material"};
-    }
-    [[nodiscard]] std::vector<InputRecord>& sources() noexcept { return sources_; }
-    [[nodiscard]] bool any_failed() const noexcept { return failures_ > 0; }
-
-private:
-    std::filesystem::path directory_;
-    std::optional<std::string_view> text_;
-    std::string obj_name_;
-    const detail::ObjSurvey& survey_;
-    const ObjOptions& options_;
-    std::vector<std::filesystem::path> directories_;
-    std::string first_failure_;
-    std::size_t failures_ = 0;
-    std::vector<InputRecord> sources_;
 };
 
 // Checks one index of a face corner, point or line vertex against the count of what it names.
@@ -211,40 +143,6 @@ detail::PolygonSoup soup_from(const tinyobj::attrib_t& attrib, const std::vector
     return soup;
 }
 
-LinearMaterial material_from(const tinyobj::material_t& m) {
-    const auto colour = [](const tinyobj::real_t* c) {
-        const auto usable = [](tinyobj::real_t v) { return std::isfinite(v) ? std::max(0.0F, v) : 0.0F; };
-        return LinearRgb{usable(c[0]), usable(c[1]), usable(c[2])};
-    };
-    LinearMaterial material{colour(m.emission), colour(m.diffuse), colour(m.specular), std::nullopt};
-    const bool has_specular = material.specular != LinearRgb{};
-    if (has_specular && std::isfinite(m.shininess) && m.shininess > 0.0F) material.shininess = m.shininess;
-    return material;
-}
-
-// The survey's word on materials a face asks for that no library gave, unless a library that
-// failed already explains it: one warning for one fact.
-void warn_of_missing_materials(Model& model, const std::string& name, const detail::ObjSurvey& survey,
-                               const std::vector<tinyobj::material_t>& materials, bool a_library_failed) {
-    if (a_library_failed) return;
-    std::unordered_set<std::string_view> defined;
-    for (const tinyobj::material_t& m : materials) defined.insert(m.name);
-    const detail::NamedAt* first = nullptr;
-    std::size_t missing = 0;
-    for (const detail::NamedAt& used : survey.materials) {
-        if (defined.contains(used.name)) continue;
-        if (missing++ == 0) first = &used;
-    }
-    if (first == nullptr) return;
-    const std::string more =
-        missing > 1 ? " (nor " + std::to_string(missing - 1) + " more materials the faces use)" : "";
-    model.warnings.push_back(name + ":" + std::to_string(first->line) + ": material '" + printable(first->name, 80) +
-                             "' " +
-                             (survey.library_lines.empty() ? "is used, but the file names no material library"
-                                                           : "is in none of the file's material libraries") +
-                             more + "; drawing the default material");
-}
-
 // tinyobjloader must have read the statements the survey checked, no more and no fewer: a
 // disagreement would leave a number unchecked.
 void check_same_reading(const tinyobj::attrib_t& attrib, const detail::ObjSurvey& survey) {
@@ -272,7 +170,7 @@ Model model_from(std::istream& obj, const std::string& name, const detail::ObjSu
     Model model;
     model.warnings = survey.warnings;
     for (std::string& warning : libraries.warnings()) model.warnings.push_back(std::move(warning));
-    warn_of_missing_materials(model, name, survey, materials, libraries.any_failed());
+    detail::warn_of_missing_materials(model.warnings, name, survey, materials, libraries.any_failed());
     model.sources = std::move(libraries.sources());
     std::size_t skipped = survey.skipped_faces;
     std::size_t dropped_again = 0;
@@ -285,50 +183,13 @@ Model model_from(std::istream& obj, const std::string& name, const detail::ObjSu
                                  std::to_string(survey.defined[0]) +
                                  " vertices give a colour, and OBJ's colours are all or none; drawing none");
     }
-    std::map<std::filesystem::path, std::shared_ptr<const Texture>> loaded;  // by canonical path: each file read once
-    std::size_t texels = 0;
+    MtlMaterials dresser(name, options, load_maps, model);
     for (auto& [id, mesh] : detail::meshes_by_material(soup, options.crease_degrees)) {
         ModelPart part{"", std::move(mesh), default_model_material()};
         if (id >= 0 && static_cast<std::size_t>(id) < materials.size()) {
-            const tinyobj::material_t& m = materials[static_cast<std::size_t>(id)];
-            part.material_name = m.name;
-            part.material = material_from(m);
-            part.opacity =
-                detail::blended_by(m.dissolve, name + ": material '" + printable(m.name) + "' has d", model.warnings);
-            part.sampler.wrap = m.diffuse_texopt.clamp ? TextureWrap::clamp : TextureWrap::repeat;
-            const std::string material = "material '" + printable(m.name) + "'";
-            if (!m.diffuse_texname.empty() && load_maps) {
-                const std::filesystem::path given = detail::resolve_named_path(
-                    libraries.directory_of(static_cast<std::size_t>(id)), m.diffuse_texname, options.confine);
-                std::error_code error;
-                std::filesystem::path map = std::filesystem::weakly_canonical(given, error);
-                if (error) map = given;
-                note_named(model.sources, given, "texture");
-                if (part.mesh.uvs.empty()) {
-                    model.warnings.push_back(
-                        name + ": " + material +
-                        " has a map but its faces have no texture coordinates; drawing its colour");
-                } else if (const auto found = loaded.find(map); found != loaded.end()) {
-                    part.texture = found->second;
-                } else {
-                    try {
-                        const std::size_t left = kMaxModelTexels - texels;
-                        if (left == 0) {
-                            throw std::runtime_error(printable(given.string()) +
-                                                     ": the model's textures already hold " +
-                                                     std::to_string(kMaxModelTexels) + " texels");
-                        }
-                        part.texture = std::make_shared<const Texture>(
-                            read_texture(given, std::min(options.max_texels, left), options.confine, &model.sources));
-                        texels += static_cast<std::size_t>(part.texture->width()) *
-                                  static_cast<std::size_t>(part.texture->height());
-                    } catch (const std::runtime_error& problem) {
-                        model.warnings.push_back(std::string(problem.what()) + "; drawing " + material +
-                                                 " in its colour");
-                    }
-                    loaded.emplace(map, part.texture);
-                }
-            }
+            const auto index = static_cast<std::size_t>(id);
+            dresser.dress(part, materials[index], libraries.directory_of(index),
+                          libraries.pbr_fields(materials[index].name));
         }
         model.parts.push_back(std::move(part));
     }
