@@ -57,24 +57,30 @@ MetallicRoughnessLighting::MetallicRoughnessLighting(const MetallicRoughness& ma
 
 MaterialSample MetallicRoughnessLighting::sample(const MaterialPoint& point) const noexcept {
     const MetallicRoughness& m = material_;
-    const auto read = [&](const std::shared_ptr<const Texture>& map) {
-        return map->sample(point.uv, point.footprint, sampler_);
+    // Each map read where its KHR_texture_transform moves the point.
+    const auto read = [&](const std::shared_ptr<const Texture>& map, const TextureTransform& transform) {
+        const MovedUv at = moved_uv(transform, point.uv, point.footprint);
+        return map->sample(at.uv, at.footprint, sampler_);
     };
     MaterialSample out{m.base_colour * point.tint, m.metallic, m.roughness, 1.0F, m.emissive,
                        unit_or_zero(point.normal)};
-    if (m.base_colour_map) out.base_colour = out.base_colour * read(m.base_colour_map);
+    if (m.base_colour_map) out.base_colour = out.base_colour * read(m.base_colour_map, m.base_colour_transform);
     if (m.metallic_roughness_map) {
-        const LinearRgb texel = read(m.metallic_roughness_map);
+        const LinearRgb texel = read(m.metallic_roughness_map, m.metallic_roughness_transform);
         out.metallic *= texel.b, out.roughness *= texel.g;
     }
-    if (m.occlusion_map) out.occlusion = 1.0F + m.occlusion_strength * (read(m.occlusion_map).r - 1.0F);
-    if (m.emissive_map) out.emissive = out.emissive * read(m.emissive_map);
+    if (m.occlusion_map)
+        out.occlusion = 1.0F + m.occlusion_strength * (read(m.occlusion_map, m.occlusion_transform).r - 1.0F);
+    if (m.emissive_map) out.emissive = out.emissive * read(m.emissive_map, m.emissive_transform);
     if (m.normal_map && glm::dot(out.normal, out.normal) > 0.0F) {
-        const LinearRgb texel = read(m.normal_map);
+        const LinearRgb texel = read(m.normal_map, m.normal_transform);
         const glm::vec3 mapped((texel.r * 2.0F - 1.0F) * m.normal_scale, (texel.g * 2.0F - 1.0F) * m.normal_scale,
                                texel.b * 2.0F - 1.0F);
         // A texel that is no direction (the zero vector, 128 128 128) leaves the surface's normal.
-        if (glm::dot(mapped, mapped) > 1e-4F) out.normal = mapped_normal(out.normal, mapped, point);
+        // The tangent frame follows the map's own coordinates, as its transform moves them.
+        MaterialPoint framed = point;
+        framed.footprint = moved_uv(m.normal_transform, point.uv, point.footprint).footprint;
+        if (glm::dot(mapped, mapped) > 1e-4F) out.normal = mapped_normal(out.normal, mapped, framed);
     }
     return out;
 }
