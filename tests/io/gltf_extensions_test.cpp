@@ -1,5 +1,4 @@
-// glTF material extensions raster reads from the file's JSON itself (KHR_texture_transform,
-// KHR_materials_emissive_strength) and glTF cameras, as read, carried between processes and drawn.
+// glTF's material extensions and cameras, read from the file's JSON; stays whole: one written square serves every case.
 #include <raster/io/model_file.hpp>
 #include <raster/render/model_scene.hpp>
 
