@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <iostream>
 #include <numbers>
+#include <stdexcept>
 #include <utility>
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -32,6 +33,12 @@ LoadedModel load_model(const std::string& path, const RenderPlan& plan) {
             loaded.warnings.push_back(warning);
     }
     for (raster::ModelPart& part : model.parts) part.sampler.filter = plan.filter;
+    if (plan.camera < 0 && !model.cameras.empty()) {  // carried, not drawn from: said once
+        const std::size_t count = model.cameras.size();
+        loaded.warnings.push_back(path + ": it carries " + std::to_string(count) +
+                                  (count == 1 ? " camera" : " cameras") +
+                                  " (raster frames the model itself; --camera N draws from one)");
+    }
     const std::size_t triangles = raster::triangle_count(model), points = raster::point_count(model),
                       lines = raster::segment_count(model);
     if (triangles > 0 || (points == 0 && lines == 0)) loaded.contents = std::to_string(triangles) + " triangles";
@@ -50,7 +57,14 @@ std::function<FinishedPicture()> render_model(const CLI::App& app, ExportOptions
         for (const std::string& warning : loaded.warnings)
             std::cerr << app.get_name() << ": warning: " << warning << '\n';
     }
-    const raster::ModelStage stage(loaded.model, plan.view, options.width, options.height);
+    raster::ModelView view = plan.view;
+    if (plan.camera >= 0) {
+        const auto index = static_cast<std::size_t>(plan.camera);
+        if (index >= loaded.model->cameras.size())
+            throw std::invalid_argument(raster::camera_refusal(*loaded.model, index));
+        view = raster::through_camera(view, loaded.model->cameras[index], *loaded.model);
+    }
+    const raster::ModelStage stage(loaded.model, view, options.width, options.height);
     const auto draw = [&](raster::Framebuffer& frame, double turn, std::vector<std::uint8_t>& alpha) {
         stage.render(frame, renderer, turn);
         if (plan.view.transparent) alpha = renderer.coverage();

@@ -34,7 +34,8 @@ struct RenderPlan {
     std::vector<raster::InputRecord> texture_inputs;
     raster::TextureFilter filter = raster::TextureFilter::trilinear;
     raster::ModelView view;
-    int frames = 0;  // 0: a still
+    int camera = -1;  // --camera: which of the file's cameras to draw from; -1 for raster's own framing
+    int frames = 0;   // 0: a still
     int fps = 30;
 };
 

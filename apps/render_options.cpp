@@ -80,6 +80,13 @@ void add_render_options(CLI::App& app, RenderArguments& arguments) {
                    "--samples [1.5]")
         ->check(finite_number(raster::kMinLineWidth, raster::kMaxLineWidth, false, " pixels"))
         ->option_text("PX");
+    auto* camera = add_integer_option(
+        app, "--camera", plan.camera, 0, 1000000,
+        "Draw from the model file's camera N (0 is the first; glTF's cameras, placed by their nodes) instead of "
+        "raster's own framing: its place, direction, field of view (or orthographic height) and clipping planes");
+    camera->option_text("N");  // the default is raster's framing, not a camera
+    for (const char* framing : {"--eye", "--target", "--fov", "--ortho", "--near", "--far"})
+        camera->excludes(app.get_option(framing));
     add_integer_option(app, "--turntable", plan.frames, 0, 10000,
                        "Write an animation of this many frames, 1..10000, turning the model once about --up");
     add_animation_options(app, plan.fps, options);

@@ -43,6 +43,7 @@
 #include <raster/shade/split_sum_table.hpp>
 #include <raster/shade/surroundings.hpp>
 #include <raster/shade/texture.hpp>
+#include <raster/shade/texture_transform.hpp>
 #include <raster/shade/textured_shaders.hpp>
 
 #include <raster/io/frame_files.hpp>
@@ -52,6 +53,7 @@
 #include <raster/io/input_file.hpp>
 #include <raster/io/kitty_graphics.hpp>
 #include <raster/io/model.hpp>
+#include <raster/io/model_camera.hpp>
 #include <raster/io/model_file.hpp>
 #include <raster/io/obj_file.hpp>
 #include <raster/io/output_file.hpp>

@@ -1,3 +1,4 @@
+// A Model as bytes and back; stays whole so that what is written and what is read, in one order, are seen together.
 #include "io/model_wire.hpp"
 
 #include "io/wire_bytes.hpp"
@@ -73,6 +74,13 @@ auto maps_of(Material& m) {
     }
 }
 
+// Where each of a physically based material's maps is read, in the order of `maps_of`.
+template <typename Material>
+auto transforms_of(Material& m) {
+    return std::array{&m.base_colour_transform, &m.metallic_roughness_transform, &m.normal_transform,
+                      &m.occlusion_transform, &m.emissive_transform};
+}
+
 }  // namespace
 
 std::size_t model_wire_size(const Model& model) noexcept {
@@ -93,12 +101,13 @@ std::size_t model_wire_size(const Model& model) noexcept {
         count(part.texture);
         for (const auto* map : maps_of(part.phong_maps)) count(*map);
         if (part.metallic_roughness) {
-            size += 128;
+            size += 256;  // factors and transforms
             for (const auto* map : maps_of(*part.metallic_roughness)) count(*map);
         }
     }
     for (const std::string& warning : model.warnings) size += 8 + warning.size();
     for (const InputRecord& source : model.sources) size += 64 + source.path.native().size() + source.role.size();
+    for (const ModelCamera& camera : model.cameras) size += 160 + camera.name.size();
     return size;
 }
 
@@ -154,6 +163,11 @@ void append_model_wire(const Model& model, std::vector<std::uint8_t>& out) {
             for (const float factor : {m.metallic, m.roughness, m.occlusion_strength, m.normal_scale})
                 wire.value(factor);
             for (const auto* map : maps_of(m)) wire.value(*map ? numbers.at(map->get()) : UINT32_MAX);
+            for (const auto* moved : transforms_of(m)) {
+                wire.value(moved->offset);
+                wire.value(moved->rotation);
+                wire.value(moved->scale);
+            }
         }
     }
     wire.value(static_cast<std::uint64_t>(model.warnings.size()));
@@ -163,6 +177,15 @@ void append_model_wire(const Model& model, std::vector<std::uint8_t>& out) {
         wire.text(source.path.string());
         wire.value(source.identity);
         wire.text(source.role);
+    }
+    wire.value(static_cast<std::uint64_t>(model.cameras.size()));
+    for (const ModelCamera& camera : model.cameras) {
+        wire.text(camera.name);
+        for (const glm::dvec3& v : {camera.eye, camera.forward, camera.up}) wire.value(v);
+        wire.value(static_cast<std::uint8_t>(camera.orthographic));
+        for (const double lens : {camera.yfov_degrees, camera.half_height, camera.near}) wire.value(lens);
+        wire.value(static_cast<std::uint8_t>(camera.far.has_value()));
+        wire.value(camera.far.value_or(0.0));
     }
 }
 
@@ -233,6 +256,11 @@ Model model_from_wire(std::span<const std::uint8_t> bytes) {
             for (float* factor : {&m.metallic, &m.roughness, &m.occlusion_strength, &m.normal_scale})
                 *factor = wire.value<float>();
             for (auto* map : maps_of(m)) texture_at(*map);
+            for (auto* moved : transforms_of(m)) {
+                moved->offset = wire.value<glm::vec2>();
+                moved->rotation = wire.value<float>();
+                moved->scale = wire.value<glm::vec2>();
+            }
         }
         model.parts.push_back(std::move(part));
     }
@@ -245,6 +273,19 @@ Model model_from_wire(std::span<const std::uint8_t> bytes) {
         record.identity = wire.value<FileIdentity>();
         record.role = wire.text();
         model.sources.push_back(std::move(record));
+    }
+    const auto cameras = wire.value<std::uint64_t>();
+    for (std::uint64_t i = 0; i < cameras; ++i) {
+        ModelCamera& camera = model.cameras.emplace_back();
+        camera.name = wire.text();
+        for (glm::dvec3* v : {&camera.eye, &camera.forward, &camera.up}) *v = wire.value<glm::dvec3>();
+        const auto orthographic = wire.value<std::uint8_t>();
+        if (orthographic > 1) WireReader::broken();
+        camera.orthographic = orthographic != 0;
+        for (double* lens : {&camera.yfov_degrees, &camera.half_height, &camera.near}) *lens = wire.value<double>();
+        const bool far = wire.value<std::uint8_t>() != 0;
+        const auto distance = wire.value<double>();
+        if (far) camera.far = distance;
     }
     if (!wire.done()) WireReader::broken();
     return model;

@@ -90,10 +90,13 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
         detail::check_drawable(framebuffer, tested, *object.mesh);  // before posing reads its facets
         const AlphaKind alpha_kind = DepthOnly<Shader> ? AlphaKind::none : alpha_kind_of(object);
         const Texture* alpha_map = object.texture && object.texture->has_alpha() ? object.texture.get() : nullptr;
+        const auto* pbr = std::get_if<MetallicRoughness>(&object.material);
+        const TextureTransform moved = pbr != nullptr ? pbr->base_colour_transform : TextureTransform{};
         const auto alpha_of = [&](const typename Shader::Varying& varying) {
             if constexpr (requires { varying.uv; }) {
-                if (alpha_map != nullptr)
-                    return object.opacity.factor * alpha_map->alpha(varying.uv, object.sampler.wrap);
+                if (alpha_map != nullptr)  // read where the base colour map is read
+                    return object.opacity.factor *
+                           alpha_map->alpha(moved_uv(moved, varying.uv, {}).uv, object.sampler.wrap);
             }
             return object.opacity.factor;
         };

@@ -78,8 +78,14 @@ ModelStage::ModelStage(std::shared_ptr<const Model> model, const ModelView& view
     if (!(radius > 0.0) || !(radius < kLargestRadius) || !finite(centre)) {
         throw std::invalid_argument("the model is too large (or too flat) to frame: bounding radius " + shown(radius));
     }
-    // Positions moved into the unit sphere in double, so a model far from the origin keeps its detail.
-    const auto unit_from_world = [&](glm::dvec3 p) { return (p - centre) / radius; };
+    // Positions moved into the unit sphere in double, so a model far from the origin keeps its detail;
+    // an orthographic view of a given height takes its unit from that height on the shorter side.
+    if (view.half_height && !(*view.half_height > 0.0 && *view.half_height < kLargestRadius))
+        throw std::invalid_argument("the orthographic view's half height must be above 0, got " +
+                                    shown(*view.half_height));
+    const double shorter = static_cast<double>(std::min(width, height)) / static_cast<double>(std::max(height, 1));
+    const double unit = view.orthographic && view.half_height ? *view.half_height * shorter : radius;
+    const auto unit_from_world = [&](glm::dvec3 p) { return (p - centre) / unit; };
     const auto unit_from_file = [&](glm::dvec3 p) { return unit_from_world(mirrored(p)); };
     const std::vector<bool> open = open_parts(*model_);
     for (std::size_t i = 0; i < model_->parts.size(); ++i) {

@@ -42,21 +42,30 @@ MetallicRoughnessLighting::MetallicRoughnessLighting(const MetallicRoughness& ma
 
 MaterialSample MetallicRoughnessLighting::sample(const MaterialPoint& point) const noexcept {
     const MetallicRoughness& m = material_;
-    const auto read = [&](const std::shared_ptr<const Texture>& map) {
-        return map->sample(point.uv, point.footprint, sampler_);
+    // Each map read where its KHR_texture_transform moves the point.
+    const auto read = [&](const std::shared_ptr<const Texture>& map, const TextureTransform& transform) {
+        const MovedUv at = moved_uv(transform, point.uv, point.footprint);
+        return map->sample(at.uv, at.footprint, sampler_);
     };
     MaterialSample out{m.base_colour * point.tint, m.metallic, m.roughness, 1.0F, m.emissive,
                        unit_or_zero(point.normal)};
-    if (m.base_colour_map) out.base_colour = out.base_colour * read(m.base_colour_map);
+    if (m.base_colour_map) out.base_colour = out.base_colour * read(m.base_colour_map, m.base_colour_transform);
     if (m.metallic_roughness_map) {
-        const LinearRgb texel = read(m.metallic_roughness_map);
+        const LinearRgb texel = read(m.metallic_roughness_map, m.metallic_roughness_transform);
         out.metallic *= texel.b, out.roughness *= texel.g;
     }
-    if (m.occlusion_map) out.occlusion = 1.0F + m.occlusion_strength * (read(m.occlusion_map).r - 1.0F);
-    if (m.emissive_map) out.emissive = out.emissive * read(m.emissive_map);
+    if (m.occlusion_map)
+        out.occlusion = 1.0F + m.occlusion_strength * (read(m.occlusion_map, m.occlusion_transform).r - 1.0F);
+    if (m.emissive_map) out.emissive = out.emissive * read(m.emissive_map, m.emissive_transform);
     if (m.normal_map && glm::dot(out.normal, out.normal) > 0.0F) {
-        out.normal = normal_mapped(out.normal, read(m.normal_map), m.normal_scale, point.tangent, point.position_per_x,
-                                   point.position_per_y, point.footprint);
+        // The vertex tangent frame follows u and v; a transform that turns or mirrors the map's
+        // coordinates leaves it to the cotangent frame of the moved coordinates.
+        const TextureTransform& moved = m.normal_transform;
+        const bool keeps_frame = moved.rotation == 0.0F && moved.scale.x > 0.0F && moved.scale.y > 0.0F;
+        const UvFootprint footprint = moved_uv(moved, point.uv, point.footprint).footprint;
+        out.normal = normal_mapped(out.normal, read(m.normal_map, moved), m.normal_scale,
+                                   keeps_frame ? point.tangent : glm::vec4(0.0F), point.position_per_x,
+                                   point.position_per_y, footprint);
     }
     return out;
 }

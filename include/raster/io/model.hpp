@@ -2,6 +2,7 @@
 
 #include <raster/geometry/mesh.hpp>
 #include <raster/io/input_file.hpp>
+#include <raster/io/model_camera.hpp>
 #include <raster/shade/linear_lighting.hpp>
 #include <raster/shade/metallic_roughness.hpp>
 #include <raster/shade/opacity.hpp>
@@ -37,6 +38,8 @@ struct Model {
     std::vector<std::string> warnings;
     // Every file read to make it: the model, its material libraries and textures.
     std::vector<InputRecord> sources;
+    // The cameras the file carries, in its own order (glTF's); `render --camera N` draws from one.
+    std::vector<ModelCamera> cameras;
 };
 
 // Why a model with no faces, points or lines is refused, in every reader's words.

@@ -7,6 +7,7 @@
 
 #include <memory>
 #include <optional>
+#include <string>
 #include <glm/vec3.hpp>
 
 // A model file's contents in front of a camera: what `render` draws (doc/conventions.md#models).
@@ -22,11 +23,12 @@ struct ModelView {
     std::optional<glm::dvec3> eye;     // default: a three-quarter view from the front, right and above
     std::optional<glm::dvec3> target;  // default: the centre of the bounding box
     glm::dvec3 up{0.0, 1.0, 0.0};
-    double fov_degrees = 40.0;        // vertical; the sphere fills the narrower side of the view
-    bool orthographic = false;        // then the sphere fills the shorter side, whatever the field of view
-    std::optional<double> near;       // model units; default just short of the sphere
-    std::optional<double> far;        // default just beyond it
-    std::optional<glm::dvec3> light;  // toward the key light; default from over the viewer's left shoulder
+    double fov_degrees = 40.0;          // vertical; the sphere fills the narrower side of the view
+    bool orthographic = false;          // then the sphere fills the shorter side, whatever the field of view
+    std::optional<double> half_height;  // orthographic: model units from the middle to the top edge instead
+    std::optional<double> near;         // model units; default just short of the sphere
+    std::optional<double> far;          // default just beyond it
+    std::optional<glm::dvec3> light;    // toward the key light; default from over the viewer's left shoulder
     ShadingMethod shading = ShadingMethod::phong;
     Rgb background{48, 52, 60};
     // The background is to be left transparent: depth is kept for every model, so that the
@@ -36,6 +38,14 @@ struct ModelView {
     // How the model's points and lines are drawn: splat size (default from their density) and line width.
     PointsAndLines points_and_lines{};
 };
+
+// `view` looking through a camera the model file carries (doc/conventions.md#model-cameras): its
+// eye, direction, up and lens, near and far where it gives them; the target, about which a
+// turntable turns, is the point ahead nearest the model's centre.
+[[nodiscard]] ModelView through_camera(ModelView view, const ModelCamera& camera, const Model& model);
+
+// What `--camera N` is refused with when the model has no camera N: how many it has, in one line.
+[[nodiscard]] std::string camera_refusal(const Model& model, std::size_t index);
 
 // A model placed for viewing, frame after frame.
 class ModelStage {

@@ -2,6 +2,7 @@
 
 #include <raster/image/colour.hpp>
 #include <raster/shade/texture.hpp>
+#include <raster/shade/texture_transform.hpp>
 
 #include <memory>
 
@@ -14,7 +15,7 @@ struct MetallicRoughness {
     LinearRgb base_colour{1.0F, 1.0F, 1.0F};
     float metallic = 1.0F;
     float roughness = 1.0F;
-    LinearRgb emissive{};  // already times KHR_materials_emissive_strength
+    LinearRgb emissive{};  // already times KHR_materials_emissive_strength (doc/conventions.md#emissive-strength)
     float occlusion_strength = 1.0F;
     float normal_scale = 1.0F;
     // Each optional; base colour and emissive hold sRGB colour, the others linear data
@@ -25,6 +26,12 @@ struct MetallicRoughness {
     std::shared_ptr<const Texture> normal_map{};
     std::shared_ptr<const Texture> occlusion_map{};
     std::shared_ptr<const Texture> emissive_map{};
+    // Where each map is read: KHR_texture_transform, the identity where the file gives none.
+    TextureTransform base_colour_transform{};
+    TextureTransform metallic_roughness_transform{};
+    TextureTransform normal_transform{};
+    TextureTransform occlusion_transform{};
+    TextureTransform emissive_transform{};
 
     // The material with every factor usable: base colour, metallic, roughness and occlusion
     // strength clamped to [0, 1], emissive to [0, inf); a NaN takes the specification's default

@@ -1,6 +1,6 @@
 #include "io/assimp/bounded_files.hpp"
 
-#include "io/gltf_structure.hpp"
+#include "io/gltf/gltf_structure.hpp"
 #include "io/named_path.hpp"
 #include "io/ply_header.hpp"
 
@@ -14,7 +14,7 @@ namespace raster::detail {
 
 std::string structure_problem(std::span<const std::uint8_t> bytes, const std::string& extension,
                               const std::filesystem::path& directory, const ObjOptions& options, PlyShape* ply,
-                              std::vector<std::string>* extensions) {
+                              GltfFacts* gltf) {
     if (extension == ".ply") {
         if (std::string problem = ply_header_problem(bytes); !problem.empty()) return problem;
         return ply_counts_problem(bytes, ply);
@@ -38,7 +38,7 @@ std::string structure_problem(std::span<const std::uint8_t> bytes, const std::st
                 return std::nullopt;
             }
         },
-        extensions);
+        gltf);
 }
 
 // A stream over bytes in memory that leaves `open` when deleted, whoever deletes it.
@@ -87,8 +87,8 @@ Assimp::IOStream* BoundedFiles::Open(const char* file, const char* mode) {
         }
         auto bytes = std::make_unique<std::vector<std::uint8_t>>(read_input_file(file, rules));
         if (is_model) {
-            if (std::string problem = structure_problem(*bytes, extension_, model_.parent_path(), options_, &ply_shape_,
-                                                        &gltf_extensions_);
+            if (std::string problem =
+                    structure_problem(*bytes, extension_, model_.parent_path(), options_, &ply_shape_, &gltf_facts_);
                 !problem.empty()) {
                 throw std::runtime_error(problem);
             }

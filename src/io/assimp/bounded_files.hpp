@@ -3,6 +3,7 @@
 #include <raster/io/input_file.hpp>
 #include <raster/io/obj_file.hpp>
 
+#include "io/gltf/gltf_facts.hpp"
 #include "io/ply_header.hpp"
 
 #include <cstdint>
@@ -40,8 +41,8 @@ public:
     [[nodiscard]] const std::string& first_reason() const noexcept { return first_reason_; }
     // What the model's body holds, when it is a PLY that passed its checks.
     [[nodiscard]] const PlyShape& ply_shape() const noexcept { return ply_shape_; }
-    // The extensions a glTF model names as used or required.
-    [[nodiscard]] const std::vector<std::string>& gltf_extensions() const noexcept { return gltf_extensions_; }
+    // What a glTF model's JSON says beyond what assimp reads: its extensions, materials' extensions, cameras.
+    [[nodiscard]] const GltfFacts& gltf_facts() const noexcept { return gltf_facts_; }
 
 private:
     static constexpr std::uint8_t kNoByte = 0;
@@ -57,14 +58,14 @@ private:
     std::string first_failure_;
     std::string first_reason_;
     PlyShape ply_shape_;
-    std::vector<std::string> gltf_extensions_;
+    GltfFacts gltf_facts_;
 };
 
 // The checks a model file passes before assimp parses it, on every open: assimp opens some
 // files twice, and a check made only the first time is no check. "" when it passes.
-// A PLY's shape goes to `ply` and a glTF's extensions to `extensions` when given.
+// A PLY's shape goes to `ply` and what a glTF says beyond assimp to `gltf` when given.
 [[nodiscard]] std::string structure_problem(std::span<const std::uint8_t> bytes, const std::string& extension,
                                             const std::filesystem::path& directory, const ObjOptions& options,
-                                            PlyShape* ply = nullptr, std::vector<std::string>* extensions = nullptr);
+                                            PlyShape* ply = nullptr, GltfFacts* gltf = nullptr);
 
 }  // namespace raster::detail

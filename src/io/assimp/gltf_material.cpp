@@ -21,6 +21,37 @@ void check(float written, float usable, const char* field, const std::string& na
     warnings.push_back(line.str());
 }
 
+// The file's own word on the material: each map's KHR_texture_transform, KHR_materials_emissive_strength
+// (doc/conventions.md#texture-transform, doc/conventions.md#emissive-strength).
+void apply_facts(const aiMaterial& m, const GltfFacts& gltf, const std::string& material, MetallicRoughness& read,
+                 std::vector<std::string>& warnings) {
+    bool ambiguous = false;
+    const GltfMaterialFacts* facts = facts_of(m, gltf, ambiguous);
+    if (ambiguous) {
+        warnings.push_back(material + ": several of the file's materials have this name and differ in their "
+                                      "extensions; drawn without KHR_texture_transform and emissive strength");
+    }
+    if (facts == nullptr) return;
+    for (const std::string& problem : facts->problems) warnings.push_back(material + ": " + problem);
+    for (std::size_t map = 0; map < kGltfMaps.size(); ++map) {
+        read.*kGltfMaps[map].transform = facts->transforms[map];
+        if (facts->coordinate_sets[map] != 0) {
+            warnings.push_back(material + ": its " + kGltfMapNames[map] + " map reads texture coordinate set " +
+                               std::to_string(facts->coordinate_sets[map]) +
+                               "; raster carries only the first set, and reads it there");
+        }
+    }
+    if (!facts->emissive_strength) return;
+    const double strength = *facts->emissive_strength;
+    if (std::isfinite(strength) && strength >= 0.0 && strength <= 3.0e38) {
+        read.emissive = read.emissive * static_cast<float>(strength);
+    } else {
+        std::ostringstream line;
+        line << material << ": emissiveStrength " << strength << " is not a finite number of 0 or more; drawn as 1";
+        warnings.push_back(line.str());
+    }
+}
+
 }  // namespace
 
 // A glTF metallic-roughness material as raster's Phong (doc/conventions.md#models): the base
@@ -52,7 +83,23 @@ bool is_gltf_material(const aiMaterial& m) {
     return m.Get(AI_MATKEY_GLTF_ALPHAMODE, mode) == AI_SUCCESS;
 }
 
-MetallicRoughness gltf_factors(const aiMaterial& m, const std::string& name, std::vector<std::string>& warnings) {
+const GltfMaterialFacts* facts_of(const aiMaterial& m, const GltfFacts& gltf, bool& ambiguous) {
+    const std::string name = m.GetName().C_Str();
+    const GltfMaterialFacts* found = nullptr;
+    ambiguous = false;
+    for (const GltfMaterialFacts& facts : gltf.materials) {
+        if (facts.name != name) continue;
+        if (found != nullptr && !(*found == facts)) {
+            ambiguous = true;
+            return nullptr;
+        }
+        found = &facts;
+    }
+    return found;
+}
+
+MetallicRoughness gltf_factors(const aiMaterial& m, const std::string& name, const GltfFacts* gltf,
+                               std::vector<std::string>& warnings) {
     MetallicRoughness read;  // the specification's defaults where the file says nothing
     aiColor4D base(1.0F, 1.0F, 1.0F, 1.0F);
     if (m.Get(AI_MATKEY_BASE_COLOR, base) == AI_SUCCESS) read.base_colour = {base.r, base.g, base.b};
@@ -60,13 +107,11 @@ MetallicRoughness gltf_factors(const aiMaterial& m, const std::string& name, std
     m.Get(AI_MATKEY_ROUGHNESS_FACTOR, read.roughness);
     aiColor3D emissive(0.0F, 0.0F, 0.0F);
     if (m.Get(AI_MATKEY_COLOR_EMISSIVE, emissive) == AI_SUCCESS) read.emissive = {emissive.r, emissive.g, emissive.b};
-    float strength = 1.0F;  // KHR_materials_emissive_strength
-    if (m.Get(AI_MATKEY_EMISSIVE_INTENSITY, strength) == AI_SUCCESS && std::isfinite(strength) && strength >= 0.0F)
-        read.emissive = read.emissive * strength;
     m.Get(AI_MATKEY_GLTF_TEXTURE_STRENGTH(aiTextureType_LIGHTMAP, 0), read.occlusion_strength);
     m.Get(AI_MATKEY_GLTF_TEXTURE_SCALE(aiTextureType_NORMALS, 0), read.normal_scale);
-    const MetallicRoughness usable = read.usable();
     const std::string material = name + ": material '" + printable(m.GetName().C_Str(), 80) + "'";
+    if (gltf != nullptr) apply_facts(m, *gltf, material, read, warnings);
+    const MetallicRoughness usable = read.usable();
     check(read.base_colour.r, usable.base_colour.r, "baseColorFactor red", material, warnings);
     check(read.base_colour.g, usable.base_colour.g, "baseColorFactor green", material, warnings);
     check(read.base_colour.b, usable.base_colour.b, "baseColorFactor blue", material, warnings);
@@ -76,14 +121,6 @@ MetallicRoughness gltf_factors(const aiMaterial& m, const std::string& name, std
     check(read.normal_scale, usable.normal_scale, "normal scale", material, warnings);
     for (const float c : {read.emissive.r, read.emissive.g, read.emissive.b})
         check(c, c >= 0.0F ? c : 0.0F, "emissiveFactor", material, warnings);
-    for (const GltfMap& map : kGltfMaps) {  // every map is read at the mesh's own coordinates
-        aiUVTransform moved;
-        if (m.Get(AI_MATKEY_UVTRANSFORM(map.type, 0), moved) != AI_SUCCESS) continue;
-        if (moved.mTranslation == aiVector2D(0, 0) && moved.mScaling == aiVector2D(1, 1) && moved.mRotation == 0.0F)
-            continue;
-        warnings.push_back(material + ": KHR_texture_transform is not applied yet; its maps are read untransformed");
-        break;
-    }
     return usable;
 }
 

@@ -4,6 +4,8 @@
 #include <raster/shade/metallic_roughness.hpp>
 #include <raster/shade/texture.hpp>
 
+#include "io/gltf/gltf_facts.hpp"
+
 #include <array>
 #include <memory>
 #include <string>
@@ -24,12 +26,18 @@ namespace raster::detail {
 [[nodiscard]] bool is_gltf_material(const aiMaterial& m);
 
 // The material's factors (its maps are the caller's to load): base colour, metallic, roughness,
-// emissive (times KHR_materials_emissive_strength where assimp reads it: 5.2.5 does not),
-// occlusion strength, normal scale. A factor
-// outside its range or not a number is made usable (MetallicRoughness::usable()) and named in
-// `warnings`, one line each, prefixed with `name`; so is a KHR_texture_transform, not applied yet.
-[[nodiscard]] MetallicRoughness gltf_factors(const aiMaterial& m, const std::string& name,
+// emissive, occlusion strength, normal scale; and from `gltf`, what raster read of the file's
+// JSON (none for assimp's default material), each map's KHR_texture_transform and
+// KHR_materials_emissive_strength (assimp 5.2.5 reads neither as the extensions define them).
+// A factor outside its range or not a number is made usable (MetallicRoughness::usable()) and
+// named in `warnings`, one line each, prefixed with `name`.
+[[nodiscard]] MetallicRoughness gltf_factors(const aiMaterial& m, const std::string& name, const GltfFacts* gltf,
                                              std::vector<std::string>& warnings);
+
+// The facts of the file's material that assimp read as `m`, found by name: assimp 5.2 lists a
+// file's materials as it first meets them, not in the file's order. Null where no material has
+// its name, or where several have it and differ (`ambiguous` is then set).
+[[nodiscard]] const GltfMaterialFacts* facts_of(const aiMaterial& m, const GltfFacts& gltf, bool& ambiguous);
 
 // Where each map sits in assimp, and how its texels are read: colour maps as sRGB, data maps
 // linear. assimp 5.2 files the metallic-roughness map under aiTextureType_UNKNOWN and the
@@ -39,13 +47,19 @@ struct GltfMap {
     TexelEncoding encoding;
     std::shared_ptr<const Texture> MetallicRoughness::*slot;
     const char* what;
+    TextureTransform MetallicRoughness::*transform;
 };
 inline const std::array<GltfMap, 5> kGltfMaps = {{
-    {aiTextureType_BASE_COLOR, TexelEncoding::srgb, &MetallicRoughness::base_colour_map, "base colour"},
-    {aiTextureType_UNKNOWN, TexelEncoding::linear, &MetallicRoughness::metallic_roughness_map, "metallic-roughness"},
-    {aiTextureType_NORMALS, TexelEncoding::linear, &MetallicRoughness::normal_map, "normal"},
-    {aiTextureType_LIGHTMAP, TexelEncoding::linear, &MetallicRoughness::occlusion_map, "occlusion"},
-    {aiTextureType_EMISSIVE, TexelEncoding::srgb, &MetallicRoughness::emissive_map, "emissive"},
+    {aiTextureType_BASE_COLOR, TexelEncoding::srgb, &MetallicRoughness::base_colour_map, "base colour",
+     &MetallicRoughness::base_colour_transform},
+    {aiTextureType_UNKNOWN, TexelEncoding::linear, &MetallicRoughness::metallic_roughness_map, "metallic-roughness",
+     &MetallicRoughness::metallic_roughness_transform},
+    {aiTextureType_NORMALS, TexelEncoding::linear, &MetallicRoughness::normal_map, "normal",
+     &MetallicRoughness::normal_transform},
+    {aiTextureType_LIGHTMAP, TexelEncoding::linear, &MetallicRoughness::occlusion_map, "occlusion",
+     &MetallicRoughness::occlusion_transform},
+    {aiTextureType_EMISSIVE, TexelEncoding::srgb, &MetallicRoughness::emissive_map, "emissive",
+     &MetallicRoughness::emissive_transform},
 }};
 
 }  // namespace raster::detail

@@ -134,10 +134,11 @@ Model read_scene_file(const std::filesystem::path& path, const ObjOptions& optio
         if (why.empty() && extension == ".ply") throw std::runtime_error(name + ": " + ply_refusal(files->ply_shape()));
         throw std::runtime_error(name + ": " + (why.empty() ? unreadable(extension) : why));
     }
-    detail::model_from_scene(*scene, path, name, detail::colour_space_of(extension), options, model);
+    detail::model_from_scene(*scene, path, name, detail::colour_space_of(extension), options, model,
+                             &files->gltf_facts());
     if (!files->ply_shape().cut_short.empty())
         model.warnings.push_back(name + ": " + files->ply_shape().cut_short + "; drawing what is there");
-    detail::warn_of_unsupported_extensions(files->gltf_extensions(), name, model);
+    detail::warn_of_unsupported_extensions(files->gltf_facts().extensions, name, model);
     return model;
 }
 
@@ -151,12 +152,14 @@ Model parse_scene_file(std::span<const std::uint8_t> bytes, const std::string& f
     Assimp::Importer importer;
     removed = keep_only_reader(importer, "." + format);
     importer.SetIOHandler(new BoundedFiles(no_files, model.sources));
-    if (std::string problem = detail::structure_problem(bytes, "." + format, "", no_files); !problem.empty())
+    detail::GltfFacts facts;
+    if (std::string problem = detail::structure_problem(bytes, "." + format, "", no_files, nullptr, &facts);
+        !problem.empty())
         throw std::runtime_error(name + ": " + problem);
     importer.ReadFileFromMemory(bytes.data(), bytes.size(), 0, format.c_str());
     const aiScene* scene = validated(importer);
     if (!readable(scene)) throw std::runtime_error(name + ": " + unreadable("." + format));
-    detail::model_from_scene(*scene, "", name, detail::colour_space_of(format), no_files, model);
+    detail::model_from_scene(*scene, "", name, detail::colour_space_of(format), no_files, model, &facts);
     return model;
 }
 

@@ -5,7 +5,7 @@
 #include "geometry/polygon_triangles.hpp"
 #include "io/assimp/gltf_material.hpp"
 #include "io/assimp/material_alpha.hpp"
-#include "io/gltf_structure.hpp"
+#include "io/gltf/gltf_structure.hpp"
 #include "io/model_builder.hpp"
 #include "io/named_path.hpp"
 
@@ -71,14 +71,16 @@ public:
         std::shared_ptr<const Texture> texture;
         std::optional<MetallicRoughness> pbr;
     };
-    std::vector<Material> materials() {
+    std::vector<Material> materials(const GltfFacts* gltf) {
         std::vector<Material> out;
         for (unsigned i = 0; i < scene_.mNumMaterials; ++i) {
             const aiMaterial& m = *scene_.mMaterials[i];
             Material& material =
                 out.emplace_back(Material{phong_from(m), options_.load_textures ? map_of(m) : nullptr, {}});
             if (!is_gltf_material(m)) continue;
-            material.pbr = gltf_factors(m, name_, model_.warnings);
+            // assimp 5.2 appends its default material, which no material of the file's names.
+            const bool assimps_default = i + 1 == scene_.mNumMaterials;
+            material.pbr = gltf_factors(m, name_, assimps_default || gltf == nullptr ? nullptr : gltf, model_.warnings);
             if (!options_.load_textures) continue;
             for (const GltfMap& map : kGltfMaps) (*material.pbr).*map.slot = map_of(m, map.type, map.encoding);
         }
@@ -287,11 +289,11 @@ ColourSpace colour_space_of(std::string format) {
 }
 
 void model_from_scene(const aiScene& scene, const std::filesystem::path& path, const std::string& name,
-                      ColourSpace colours, const ObjOptions& options, Model& model) {
+                      ColourSpace colours, const ObjOptions& options, Model& model, const GltfFacts* gltf) {
     try {
         SceneReader reader(scene, path, colours, options, model);
         PolygonSoup soup = reader.soup();
-        const auto materials = reader.materials();
+        const auto materials = reader.materials(gltf);
         for (auto& [id, mesh] : meshes_by_material(soup, options.crease_degrees)) {
             ModelPart part{"", std::move(mesh), default_model_material()};
             if (id >= 0 && static_cast<std::size_t>(id) < materials.size()) {
@@ -315,7 +317,11 @@ void model_from_scene(const aiScene& scene, const std::filesystem::path& path, c
         throw std::runtime_error(name + ": " + problem.what());
     }
     if (model.parts.empty()) throw std::runtime_error(name + ": " + kNothingToDraw);
-    warn_of_what_is_not_drawn(scene, name, model);
+    const bool cameras = gltf != nullptr && !gltf->cameras.empty();
+    if (cameras) model.cameras = gltf->cameras;
+    for (const std::string& problem : gltf != nullptr ? gltf->camera_problems : std::vector<std::string>{})
+        model.warnings.push_back(name + ": " + problem);
+    warn_of_what_is_not_drawn(scene, name, model, cameras);
 }
 
 }  // namespace raster::detail

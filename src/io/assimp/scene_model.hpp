@@ -3,6 +3,8 @@
 #include <raster/io/model.hpp>
 #include <raster/io/obj_file.hpp>
 
+#include "io/gltf/gltf_facts.hpp"
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -20,13 +22,15 @@ enum class ColourSpace { linear, srgb };
 [[nodiscard]] ColourSpace colour_space_of(std::string format);
 
 // Appends the scene's parts to `model`; `path` places the files it names and `name` is for
-// messages. Throws std::runtime_error naming `name` for a scene it cannot use.
+// messages; `gltf` is what raster read from a glTF's JSON itself, if any. Throws
+// std::runtime_error naming `name` for a scene it cannot use.
 void model_from_scene(const aiScene& scene, const std::filesystem::path& path, const std::string& name,
-                      ColourSpace colours, const ObjOptions& options, Model& model);
+                      ColourSpace colours, const ObjOptions& options, Model& model, const GltfFacts* gltf = nullptr);
 
 // One warning for what the scene carries and raster does not draw: skins, morph targets,
 // animations, cameras, lights (doc/conventions.md#not-drawn).
-void warn_of_what_is_not_drawn(const aiScene& scene, const std::string& name, Model& model);
+// A glTF's cameras are carried in Model::cameras instead (`gltf_cameras`).
+void warn_of_what_is_not_drawn(const aiScene& scene, const std::string& name, Model& model, bool gltf_cameras = false);
 
 // One warning naming the glTF extensions among `used` that raster does not draw, if any.
 void warn_of_unsupported_extensions(const std::vector<std::string>& used, const std::string& name, Model& model);

@@ -11,7 +11,7 @@
 namespace raster::detail {
 
 // One warning for what the scene carries and raster does not draw (doc/conventions.md#not-drawn).
-void warn_of_what_is_not_drawn(const aiScene& scene, const std::string& name, Model& model) {
+void warn_of_what_is_not_drawn(const aiScene& scene, const std::string& name, Model& model, bool gltf_cameras) {
     bool skinned = false, morphed = false;
     for (unsigned i = 0; scene.mMeshes != nullptr && i < scene.mNumMeshes; ++i) {
         if (scene.mMeshes[i] == nullptr) continue;
@@ -25,7 +25,8 @@ void warn_of_what_is_not_drawn(const aiScene& scene, const std::string& name, Mo
         if (count > 0) parts.push_back(std::to_string(count) + " " + (count == 1 ? one : many));
     };
     counted(scene.mNumAnimations, "animation (not played)", "animations (not played)");
-    counted(scene.mNumCameras, "camera (raster frames the model itself)", "cameras (raster frames the model itself)");
+    counted(gltf_cameras ? 0U : scene.mNumCameras, "camera (raster frames the model itself)",
+            "cameras (raster frames the model itself)");
     counted(scene.mNumLights, "light (raster lights the model itself)", "lights (raster lights the model itself)");
     if (parts.empty()) return;
     std::string text;

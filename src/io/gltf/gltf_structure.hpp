@@ -1,5 +1,7 @@
 #pragma once
 
+#include "io/gltf/gltf_facts.hpp"
+
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -23,10 +25,10 @@ inline constexpr std::uint64_t kMaxGltfNodeInstances = std::uint64_t{1} << 18;
 // "" when the .gltf text or .glb file `bytes` holds together, else the first problem, as the end
 // of a sentence about the file. `external_size` gives the size of a buffer the file names by
 // URI, or nothing when it cannot be read (its reader says why later).
-// The names in extensionsUsed and extensionsRequired go to `extensions` when given, once each.
+// What the file says beyond what assimp reads goes to `facts` when given: the names in
+// extensionsUsed and extensionsRequired once each, the materials' extensions and the cameras.
 [[nodiscard]] std::string gltf_structure_problem(
     std::span<const std::uint8_t> bytes, bool binary,
-    const std::function<std::optional<std::uint64_t>(std::string_view uri)>& external_size,
-    std::vector<std::string>* extensions = nullptr);
+    const std::function<std::optional<std::uint64_t>(std::string_view uri)>& external_size, GltfFacts* facts = nullptr);
 
 }  // namespace raster::detail
