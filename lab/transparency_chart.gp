@@ -17,8 +17,7 @@ set yrange [0:0.45]
 file = sprintf("%s/transparency.csv", dir)
 plot file using 2:3 with points pt 7 ps 1.6 lc "#1f77b4" title "mean", \
      file using 2:4 with points pt 5 ps 1.3 lc "#d62728" title "worst", \
-     file using 2:4:(stringcolumn(1)) with labels left offset 1,0.6 font ",10" noenhanced notitle, \
-     file using 2:3:(stringcolumn(1)) with labels left offset 1,-0.6 font ",10" noenhanced notitle
+     file using 2:4:(stringcolumn(1)) with labels left offset 1,0.6 font ",10" noenhanced notitle
 # Right: the blended frame's time over the opaque frame's, by layers over every pixel.
 set title "Lit layers over every pixel, 800 x 600, one thread"
 set xlabel "layers over every pixel"
