@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -29,20 +30,45 @@ public:
     explicit FragmentList(std::size_t cap = 0) noexcept : cap_(cap) {}
 
     Fragment& add(float depth, float alpha, std::uint32_t pixel, std::uint16_t samples) {
-        if (size_ >= cap_) refuse();
-        if (size_ % kChunk == 0 && size_ / kChunk == chunks_.size())
-            chunks_.push_back(std::make_unique_for_overwrite<Fragment[]>(kChunk));  // each written before it is read
-        Fragment& added = (*this)[size_++];
+        if (size_ >= cap_ || size_ % kChunk == 0) grow();  // refused past the cap, else a new chunk made ready
+        Fragment& added = chunks_[size_ / kChunk][size_ % kChunk];
+        ++size_;
+        if (const std::size_t local = pixel - first_pixel_; local < counts_)
+            ++starts[local + 1];  // the resolve's count
         added = {depth, alpha, pixel, samples, {0, 0, 0}};
         return added;
     }
     [[nodiscard]] std::size_t size() const noexcept { return size_; }
     [[nodiscard]] bool empty() const noexcept { return size_ == 0; }
     [[nodiscard]] Fragment& operator[](std::size_t i) noexcept { return chunks_[i / kChunk][i % kChunk]; }
-    // Forgets the fragments, keeping their memory for the next frame.
+    // Calls f(fragment) for each, in drawing order, a chunk at a time.
+    template <typename F>
+    void for_each(F&& f) const {
+        for (std::size_t begin = 0; begin < size_; begin += kChunk) {
+            const Fragment* chunk = chunks_[begin / kChunk].get();
+            const std::size_t n = std::min(kChunk, size_ - begin);
+            for (std::size_t i = 0; i < n; ++i) f(chunk[i]);
+        }
+    }
+    // Forgets the fragments, keeping their memory (and the resolve's) for the next frame.
     void clear() noexcept { size_ = 0; }
+    // The same with a new cap and the strip's pixels [first_pixel, first_pixel + pixels), counted as they come:
+    // a Renderer's lists, kept from frame to frame, take each frame's share.
+    void clear(std::size_t cap, std::uint32_t first_pixel, std::size_t pixels) {
+        size_ = 0, cap_ = cap, first_pixel_ = first_pixel, counts_ = pixels;
+        starts.assign(pixels + 1, 0);
+    }
+
+    // The resolve's working memory, kept with the list so that a frame reuses the last one's pages.
+    std::vector<Fragment> grouped;
+    std::vector<std::uint32_t> starts;  // after clear(cap, ...): starts[p + 1] counts the fragments of local pixel p
 
 private:
+    [[gnu::noinline]] void grow() {
+        if (size_ >= cap_) refuse();
+        if (size_ % kChunk == 0 && size_ / kChunk == chunks_.size())
+            chunks_.push_back(std::make_unique_for_overwrite<Fragment[]>(kChunk));  // each written before it is read
+    }
     [[noreturn, gnu::cold, gnu::noinline]] static void refuse() {
         throw std::length_error("the transparent surfaces of this frame overlap in more than " +
                                 std::to_string(kMaxFragmentBytes >> 20) +
@@ -52,6 +78,8 @@ private:
     static constexpr std::size_t kChunk = 4096;
     std::size_t cap_;
     std::size_t size_ = 0;
+    std::uint32_t first_pixel_ = 0;
+    std::size_t counts_ = 0;  // the pixels counted in starts, none unless clear(cap, ...) said
     std::vector<std::unique_ptr<Fragment[]>> chunks_;
 };
 

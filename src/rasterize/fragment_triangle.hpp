@@ -81,6 +81,7 @@ void gather_triangle(FragmentList* list, OpaqueDepths opaque, int frame_width,
     const std::uint32_t all = coverage.all();
     std::array<double, kMaxSamples> at_a{}, at_b{};
     std::array<float, kMaxSamples> at_z{};
+    const auto width = static_cast<std::size_t>(frame_width);
     coverage.rows(rows, [&](int y, int begin, int end, int inner_begin, int inner_end) {
         float* const depth_row = opaque.samples == nullptr && opaque.depth != nullptr ? opaque.depth->row(y) : nullptr;
         for (int x = begin; x < end; ++x) {
@@ -93,6 +94,18 @@ void gather_triangle(FragmentList* list, OpaqueDepths opaque, int frame_width,
                 nearest = opaque.samples->depths(x, y);
             } else if (depth_row != nullptr) {
                 nearest = depth_row + x;
+            }
+            if (count == 1 && list != nullptr) {  // one sample at the centre: its weights are the pixel's
+                const float z = depth_at(a, b);
+                if (nearest != nullptr && z > nearest[0]) continue;  // something opaque is nearer
+                const PixelVarying<Varying> shaded = varying_at(a, b);
+                const float alpha = alpha_of(shaded.value);
+                if (!(alpha > 0.0F)) continue;  // shows nothing
+                Fragment& fragment = list->add(
+                    z, std::min(alpha, 1.0F),
+                    static_cast<std::uint32_t>(static_cast<std::size_t>(y) * width + static_cast<std::size_t>(x)), 1);
+                lanes.add(fragment.colour, 1, shaded);
+                continue;
             }
             std::uint32_t passed = 0;
             for (int s = 0; s < count; ++s) {

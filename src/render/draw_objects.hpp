@@ -44,6 +44,7 @@ struct Multisampling {
     detail::SampleBuffer* buffer = nullptr;
     std::span<const detail::SampleOffset> offsets{};
     std::uint8_t* alpha = nullptr;
+    std::vector<detail::FragmentList>* fragments = nullptr;  // a Renderer's, kept from frame to frame; else the frame's
 };
 
 // How an object's alpha is drawn: not at all, blended, or masked sample by sample (a mask
@@ -82,7 +83,9 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
         if (tested != nullptr) tested->clear_rows(strip.y, strip.y + strip.height);
     };
     // Blend objects' fragments, one list per strip, kept from when they are drawn until the strip resolves.
-    std::vector<detail::FragmentList> fragments;
+    std::vector<detail::FragmentList> own_fragments;
+    std::vector<detail::FragmentList>& fragments =
+        multisampling.fragments != nullptr ? *multisampling.fragments : own_fragments;
     // One object through `shader`: posed, put through the front end, binned and drawn strip by strip.
     const auto draw_object = [&](const SceneObject& object, const auto& shader) {
         using Shader = std::remove_cvref_t<decltype(shader)>;
@@ -183,10 +186,15 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
     if (blending) {  // after every opaque object, so that the fragments are tested against them all
         const std::size_t frame_pixels =
             static_cast<std::size_t>(framebuffer.width()) * static_cast<std::size_t>(framebuffer.height());
+        fragments.resize(static_cast<std::size_t>(layout.count()));
         for (int s = 0; s < layout.count(); ++s) {
             const auto strip_pixels =
                 static_cast<std::size_t>(layout.strip(s).height) * static_cast<std::size_t>(framebuffer.width());
-            fragments.emplace_back(kMaxFragmentBytes / sizeof(Fragment) * strip_pixels / frame_pixels);
+            fragments[static_cast<std::size_t>(s)].clear(
+                kMaxFragmentBytes / sizeof(Fragment) * strip_pixels / frame_pixels,
+                static_cast<std::uint32_t>(static_cast<std::size_t>(layout.strip(s).y) *
+                                           static_cast<std::size_t>(framebuffer.width())),
+                strip_pixels);
         }
         for (const SceneObject& object : scene.objects) {
             if (!object.mesh || !blends(object.opacity)) continue;

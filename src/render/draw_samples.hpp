@@ -24,11 +24,12 @@ constexpr std::size_t kMaxSampleBufferBytes = std::size_t{1} << 30;
 // Draws the scene at `samples` per pixel into `framebuffer`; one sample is the plain draw.
 // Multisampling shades once per pixel into `buffer`; supersampling (asked for, or when the
 // samples of the frame would not fit in kMaxSampleBufferBytes) draws a whole pass at each
-// sample position. `alpha`, for a scene that keeps depth, receives the share of samples covered.
+// sample position. `alpha`, for a scene that keeps depth, receives the share of samples covered; `fragments`,
+// when given, keeps the transparent fragments' memory from one frame to the next.
 template <typename Camera>
 std::size_t draw_samples(Framebuffer& framebuffer, const BasicScene<Camera>& scene, DepthBuffer& depth,
                          detail::WorkerTeam& team, RenderOptions options, detail::SampleBuffer& buffer,
-                         std::vector<std::uint8_t>* alpha) {
+                         std::vector<std::uint8_t>* alpha, std::vector<detail::FragmentList>* fragments = nullptr) {
     const std::span<const glm::vec2> offsets = sample_offsets(options.samples);
     const std::size_t pixels =
         static_cast<std::size_t>(framebuffer.width()) * static_cast<std::size_t>(framebuffer.height());
@@ -39,7 +40,7 @@ std::size_t draw_samples(Framebuffer& framebuffer, const BasicScene<Camera>& sce
         const bool composited = alpha != nullptr && scene.keep_depth && blending;
         if (alpha != nullptr) alpha->assign(composited ? pixels : 0, 0);
         return draw(framebuffer, scene, depth, team, options.depth_first,
-                    {nullptr, {}, composited ? alpha->data() : nullptr});
+                    {nullptr, {}, composited ? alpha->data() : nullptr, fragments});
     }
     if (!options.shade_every_sample && pixels * offsets.size() * 7 <= kMaxSampleBufferBytes) {
         std::array<detail::SampleOffset, detail::kMaxSamples> at{};
@@ -57,7 +58,7 @@ std::size_t draw_samples(Framebuffer& framebuffer, const BasicScene<Camera>& sce
             alpha->clear();  // an opaque scene has no coverage to give
         }
         return draw(framebuffer, scene, depth, team, options.depth_first,
-                    {&buffer, std::span(at.data(), offsets.size()), coverage});
+                    {&buffer, std::span(at.data(), offsets.size()), coverage, fragments});
     }
     // Only a caller that takes the alpha gets the surfaces' colour apart from the background.
     const bool with_alpha = alpha != nullptr && scene.keep_depth;
@@ -70,7 +71,7 @@ std::size_t draw_samples(Framebuffer& framebuffer, const BasicScene<Camera>& sce
     for (const glm::vec2 offset : offsets) {
         moved.camera = scene.camera.sampled_at(glm::dvec2(offset));
         drawn = draw(pass, moved, depth, team, options.depth_first,
-                     {nullptr, {}, pass_alpha.empty() ? nullptr : pass_alpha.data()});
+                     {nullptr, {}, pass_alpha.empty() ? nullptr : pass_alpha.data(), fragments});
         if (with_alpha) {
             resolve.add(pass, pass_alpha.empty() ? depth.coverage() : pass_alpha);
         } else {

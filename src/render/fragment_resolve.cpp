@@ -34,33 +34,39 @@ void resolve_fragments(FragmentList& list, OpaqueResult opaque, std::uint8_t* al
             for (std::size_t x = 0; x < width; ++x) row[x] = std::isinf(depths[x]) ? 0 : 255;
         }
     }
-    FragmentList& fragments = list;
-    if (fragments.empty()) return;
-    // Grouped by pixel in one counting pass (drawing order kept), then each pixel's few sorted by depth.
+    if (list.empty()) return;
+    // Grouped by pixel by the counts taken as the fragments came (drawing order kept), copied whole so that each
+    // pixel's few lie together, then sorted by depth.
     const std::size_t first_pixel = static_cast<std::size_t>(y_begin) * width;
-    std::vector<std::uint32_t> starts(static_cast<std::size_t>(y_end - y_begin) * width + 1, 0);
-    for (std::size_t i = 0; i < fragments.size(); ++i) ++starts[fragments[i].pixel - first_pixel + 1];
-    for (std::size_t i = 1; i < starts.size(); ++i) starts[i] += starts[i - 1];
-    std::vector<std::uint32_t> order(fragments.size());
-    {
-        std::vector<std::uint32_t> next(starts.begin(), starts.end() - 1);
-        for (std::size_t i = 0; i < fragments.size(); ++i)
-            order[next[fragments[i].pixel - first_pixel]++] = static_cast<std::uint32_t>(i);
+    std::vector<std::uint32_t>& starts = list.starts;
+    const std::size_t strip_pixels = static_cast<std::size_t>(y_end - y_begin) * width;
+    if (starts.size() != strip_pixels + 1) {  // not counted as they came: counted now
+        starts.assign(strip_pixels + 1, 0);
+        list.for_each([&](const Fragment& f) { ++starts[f.pixel - first_pixel + 1]; });
     }
+    for (std::size_t i = 1; i < starts.size(); ++i) starts[i] += starts[i - 1];
+    if (list.grouped.size() < list.size()) list.grouped.resize(list.size());
+    Fragment* const grouped = list.grouped.data();
+    std::uint32_t* const ends = starts.data();  // after the copy, each pixel's end
+    list.for_each([&](const Fragment& f) { grouped[ends[f.pixel - first_pixel]++] = f; });
     const std::array<float, 256>& linear = linear_from_srgb_bytes();
     const int samples = opaque.samples != nullptr ? opaque.samples->samples() : 1;
     std::uint8_t* const pixels = frame.pixels();
-    for (std::size_t local = 0; local + 1 < starts.size(); ++local) {
-        const auto first = order.begin() + starts[local], last = order.begin() + starts[local + 1];
+    std::uint32_t begin = 0;
+    for (std::size_t local = 0; local + 1 < starts.size(); begin = starts[local], ++local) {
+        Fragment* const first = grouped + begin;
+        Fragment* const last = grouped + starts[local];
         if (first == last) continue;
         // Far to near, equal depths in drawing order: insertion for the few a pixel mostly has.
-        const auto farther = [&](std::uint32_t a, std::uint32_t b) { return fragments[a].depth > fragments[b].depth; };
-        if (last - first > 32) std::stable_sort(first, last, farther);
-        for (auto i = first + 1; i != last && last - first <= 32; ++i) {
-            const std::uint32_t moved = *i;
-            auto j = i;
-            for (; j != first && fragments[*(j - 1)].depth < fragments[moved].depth; --j) *j = *(j - 1);
-            *j = moved;
+        if (last - first > 32) {
+            std::stable_sort(first, last, [](const Fragment& a, const Fragment& b) { return a.depth > b.depth; });
+        } else {
+            for (Fragment* i = first + 1; i != last; ++i) {
+                const Fragment moved = *i;
+                Fragment* j = i;
+                for (; j != first && (j - 1)->depth < moved.depth; --j) *j = *(j - 1);
+                *j = moved;
+            }
         }
         const auto pixel = static_cast<std::uint32_t>(first_pixel + local);
         const int x = static_cast<int>(pixel % width), y = static_cast<int>(pixel / width);
@@ -75,9 +81,8 @@ void resolve_fragments(FragmentList& list, OpaqueResult opaque, std::uint8_t* al
             Composite sample{{0.0F, 0.0F, 0.0F}, shown ? 1.0F : 0.0F};
             for (std::size_t c = 0; c < 3 && shown; ++c)
                 sample.colour[c] = linear[colours[static_cast<std::size_t>(s) * 3 + c]];
-            for (auto f = first; f != last; ++f) {
-                const Fragment& fragment = fragments[*f];
-                if ((fragment.samples & (1U << static_cast<unsigned>(s))) != 0) sample.over(fragment, linear);
+            for (const Fragment* f = first; f != last; ++f) {
+                if ((f->samples & (1U << static_cast<unsigned>(s))) != 0) sample.over(*f, linear);
             }
             for (std::size_t c = 0; c < 3; ++c) sum[c] += sample.colour[c];
             sum[3] += sample.alpha;
@@ -95,7 +100,8 @@ void resolve_fragments(FragmentList& list, OpaqueResult opaque, std::uint8_t* al
             alpha[pixel] = static_cast<std::uint8_t>(std::lround(255.0F * sum[3] * share));
         }
     }
-    fragments.clear();
+    list.clear();
+    list.starts.clear();  // counted afresh next frame
 }
 
 }  // namespace raster::detail

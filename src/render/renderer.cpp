@@ -2,6 +2,7 @@
 #include <raster/render/samples.hpp>
 #include <raster/render/scene.hpp>
 
+#include "rasterize/fragment_list.hpp"
 #include "rasterize/sample_buffer.hpp"
 #include "rasterize/worker_team.hpp"
 #include "render/draw_samples.hpp"
@@ -40,20 +41,21 @@ std::size_t render(Framebuffer& framebuffer, const PerspectiveScene& scene, Dept
 
 Renderer::Renderer(RenderOptions options)
     : team_(std::make_unique<detail::WorkerTeam>(thread_count(options.threads))),
-      samples_buffer_(std::make_unique<detail::SampleBuffer>()), options_{options.threads,
-                                                                          static_cast<int>(
-                                                                              sample_offsets(options.samples).size()),
-                                                                          options.shade_every_sample,
-                                                                          options.depth_first} {}
+      samples_buffer_(std::make_unique<detail::SampleBuffer>()),
+      fragments_(std::make_unique<std::vector<detail::FragmentList>>()),
+      options_{options.threads, static_cast<int>(sample_offsets(options.samples).size()), options.shade_every_sample,
+               options.depth_first} {}
 Renderer::~Renderer() = default;
 Renderer::Renderer(Renderer&&) noexcept = default;
 Renderer& Renderer::operator=(Renderer&&) noexcept = default;
 int Renderer::threads() const noexcept { return team_->size(); }
 std::size_t Renderer::render(Framebuffer& framebuffer, const Scene& scene) {
-    return detail::draw_samples(framebuffer, scene, depth_, *team_, options_, *samples_buffer_, &coverage_);
+    return detail::draw_samples(framebuffer, scene, depth_, *team_, options_, *samples_buffer_, &coverage_,
+                                fragments_.get());
 }
 std::size_t Renderer::render(Framebuffer& framebuffer, const PerspectiveScene& scene) {
-    return detail::draw_samples(framebuffer, scene, depth_, *team_, options_, *samples_buffer_, &coverage_);
+    return detail::draw_samples(framebuffer, scene, depth_, *team_, options_, *samples_buffer_, &coverage_,
+                                fragments_.get());
 }
 std::vector<std::uint8_t> Renderer::coverage() const {
     return options_.samples == 1 && coverage_.empty() ? depth_.coverage() : coverage_;  // drawn under transparency

@@ -2,8 +2,10 @@
 // (doc/conventions.md#transparency).
 #include "rasterize/fragment_list.hpp"
 
+#include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <vector>
 #include <gtest/gtest.h>
 
 TEST(FragmentList, OnePastItsCapIsAClearError) {
@@ -19,4 +21,16 @@ TEST(FragmentList, OnePastItsCapIsAClearError) {
         EXPECT_NE(std::string(error.what()).find("1024 MiB of fragments"), std::string::npos) << error.what();
     }
     EXPECT_EQ(list.size(), 2U);
+}
+
+TEST(FragmentList, CountsEachPixelsFragmentsAsTheyComeAndForgetsThemWhenCleared) {
+    raster::detail::FragmentList list;
+    list.clear(8, 100, 3);  // pixels 100..102 of the frame
+    list.add(1.0F, 0.5F, 101, 1);
+    list.add(2.0F, 0.5F, 101, 1);
+    list.add(3.0F, 0.5F, 102, 1);
+    EXPECT_EQ(list.starts, (std::vector<std::uint32_t>{0, 0, 2, 1}));
+    list.clear(8, 0, 2);
+    EXPECT_TRUE(list.empty());
+    EXPECT_EQ(list.starts, (std::vector<std::uint32_t>{0, 0, 0}));
 }

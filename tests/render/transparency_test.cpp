@@ -133,6 +133,22 @@ TEST(Transparency, EveryFileOrderEverySampleCountAndThreadCountGiveOnePicture) {
     }
 }
 
+TEST(Transparency, ARendererKeepsNoFragmentsFromOneFrameToTheNext) {
+    // A Renderer keeps its fragments' memory: each frame must still draw as a fresh Renderer's first frame.
+    const raster::Scene three = scene_of({square(0, kRed, blend(0.5F), 0.55F, {-0.2F, 0.1F}),
+                                          square(1, kGreen, blend(0.6F), 0.6F, {0.15F, -0.1F}),
+                                          square(2, kBlue, blend(0.7F), 0.5F, {0.1F, 0.25F})});
+    const raster::Scene one = scene_of({square(1, kGreen, blend(0.5F), 0.3F, {0.4F, 0.4F})});
+    for (const int samples : {1, 4}) {
+        raster::Renderer renderer({.samples = samples});
+        for (const raster::Scene* scene : {&three, &one, &three, &one}) {
+            Framebuffer image(kSize, kSize);
+            renderer.render(image, *scene);
+            EXPECT_EQ(rows_of(image), rows_of(drawn(*scene, samples).image)) << samples << " samples";
+        }
+    }
+}
+
 TEST(Transparency, TransparentBackgroundTakesAlphaFromEveryLayer) {
     // Red 0.5 over blue 0.5 over nothing: alpha 1 - 0.5 x 0.5, colour the surfaces' alone.
     const std::vector<raster::SceneObject> layers = {square(0, kRed, blend(0.5F)), square(2, kBlue, blend(0.5F))};

@@ -121,6 +121,7 @@ inline constexpr int kMaxThreads = 256;
 namespace detail {
 class WorkerTeam;
 class SampleBuffer;
+class FragmentList;
 }  // namespace detail
 
 // Clears to the background and draws every object; `depth` is prepared and used only when the
@@ -158,7 +159,8 @@ public:
 
 private:
     std::unique_ptr<detail::WorkerTeam> team_;
-    std::unique_ptr<detail::SampleBuffer> samples_buffer_;  // kept from frame to frame
+    std::unique_ptr<detail::SampleBuffer> samples_buffer_;          // kept from frame to frame
+    std::unique_ptr<std::vector<detail::FragmentList>> fragments_;  // one list a strip, kept from frame to frame
     DepthBuffer depth_;
     RenderOptions options_;
     std::vector<std::uint8_t> coverage_;  // of the last frame drawn with more than one sample
