@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <glm/geometric.hpp>
 
 using raster::Framebuffer;
 using raster::Model;
@@ -98,4 +99,23 @@ TEST(OpenSurfaces, BothSidesDoublesTheFacetsWithTurnedNormals) {
                     c = doubled.positions[turned.corners[2]];
     EXPECT_EQ(raster::facet_normal(a, b, c), turned.normal);  // clockwise from its own side
     EXPECT_EQ(doubled.normals[turned.corners[0]], -mesh.normals[mesh.facets[0].corners[0]]);
+}
+
+// The back copy's whole tangent frame turns round with its normal (w too, since n x t does not),
+// so a normal map's normal there is the front's turned round, as glTF's double-sided back faces.
+TEST(OpenSurfaces, BothSidesTurnsTheBackCopysTangentFrameRound) {
+    raster::Mesh mesh = raster::parse_obj(kTriangle, "").parts.at(0).mesh;
+    mesh.tangents.assign(mesh.positions.size(), glm::vec4(1, 0, 0, -1));
+    const raster::Mesh doubled = raster::both_sides(mesh);
+    ASSERT_EQ(doubled.tangents.size(), doubled.positions.size());
+    const glm::vec3 texel(0.3F, 0.4F, 0.866F);
+    const auto mapped = [&](const raster::Mesh& m, std::size_t i) {
+        const glm::vec3 n = m.normals[i], t(m.tangents[i]);
+        return texel.x * t + texel.y * m.tangents[i].w * glm::cross(n, t) + texel.z * n;
+    };
+    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+        EXPECT_EQ(doubled.tangents[i], mesh.tangents[i]);
+        EXPECT_EQ(doubled.tangents[i + mesh.positions.size()], -mesh.tangents[i]);
+        EXPECT_EQ(mapped(doubled, i + mesh.positions.size()), -mapped(mesh, i));
+    }
 }
