@@ -62,7 +62,7 @@ void append_posed(Mesh& whole, const Mesh& part, const glm::mat4& model) {
 namespace detail {
 
 Posing::Posing(const Mesh& mesh, const glm::mat4& model, PoseParts parts)
-    : source_(mesh), model_(model), normal_matrix_(glm::transpose(glm::inverse(glm::mat3(model)))),
+    : source_(mesh), pose_(model),
       // A mirror turns clockwise into counter-clockwise: two corners are swapped to keep the convention.
       mirrored_(glm::determinant(glm::mat3(model)) < 0.0F), parts_(parts) {
     result_.surface = mesh.surface;
@@ -77,14 +77,9 @@ Posing::Posing(const Mesh& mesh, const glm::mat4& model, PoseParts parts)
 
 void Posing::vertices(std::size_t begin, std::size_t end) noexcept {
     for (std::size_t i = begin; i < end; ++i) {  // normals may not match positions yet: drawing checks that
-        if (i < source_.positions.size())
-            result_.positions[i] = glm::vec3(model_ * glm::vec4(source_.positions[i], 1.0F));
-        if (parts_.vertex_normals && i < source_.normals.size())
-            result_.normals[i] = unit_or_zero(normal_matrix_ * source_.normals[i]);
-        if (i < source_.tangents.size()) {  // a direction in the surface; a mirror turns its handedness
-            const glm::vec4& t = source_.tangents[i];
-            result_.tangents[i] = glm::vec4(unit_or_zero(glm::mat3(model_) * glm::vec3(t)), mirrored_ ? -t.w : t.w);
-        }
+        if (i < source_.positions.size()) result_.positions[i] = pose_.position(source_.positions[i]);
+        if (parts_.vertex_normals && i < source_.normals.size()) result_.normals[i] = pose_.normal(source_.normals[i]);
+        if (i < source_.tangents.size()) result_.tangents[i] = pose_.tangent(source_.tangents[i], mirrored_);
     }
 }
 
@@ -92,7 +87,7 @@ void Posing::facets(std::size_t begin, std::size_t end) noexcept {
     for (std::size_t f = begin; f < end; ++f) {
         Facet facet = source_.facets[f];
         if (mirrored_) std::swap(facet.corners[1], facet.corners[2]);
-        facet.normal = parts_.facet_normals ? unit_or_zero(normal_matrix_ * facet.normal) : glm::vec3(0.0F);
+        facet.normal = parts_.facet_normals ? pose_.normal(facet.normal) : glm::vec3(0.0F);
         result_.facets[f] = facet;
     }
 }

@@ -103,9 +103,17 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
             }
             return object.opacity.factor;
         };
-        const bool dots = !object.mesh->points.empty() || !object.mesh->segments.empty();  // lit by vertex normals
-        detail::Posing posing(*object.mesh, object.model,
-                              {.vertex_normals = !per_facet || dots, .facet_normals = per_facet});
+        const PointTargets points_target{&framebuffer, tested, samples, depth_test, multisampling.offsets};
+        if (object.mesh->facets.empty()) {  // points and lines alone: no posed copy, no front end
+            if (!cleared) team.for_each(layout.count(), [&](int s) { clear(layout.strip(s)); });
+            cleared = true;
+            if constexpr (!DepthOnly<Shader>) {  // points and lines are drawn in the shading pass only
+                detail::draw_points_lines(scene.camera, scene.points_and_lines, object, shader, team, layout,
+                                          points_target);
+            }
+            return std::size_t{0};
+        }
+        detail::Posing posing(*object.mesh, object.model, {.vertex_normals = !per_facet, .facet_normals = per_facet});
         const Mesh& mesh = posing.mesh();  // sized now, filled by the batches below
         auto front = front_for(mesh, shader);
         const std::size_t vertices = mesh.positions.size(), facets = mesh.facets.size();
@@ -153,8 +161,8 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
         });
         cleared = true;
         if constexpr (!DepthOnly<Shader>) {  // points and lines are drawn in the shading pass only
-            detail::draw_points_lines(scene.camera, scene.points_and_lines, object, mesh, shader, team, layout,
-                                      {&framebuffer, tested, samples, depth_test, multisampling.offsets});
+            detail::draw_points_lines(scene.camera, scene.points_and_lines, object, shader, team, layout,
+                                      points_target);
         }
         return std::accumulate(counted.begin(), counted.end(), std::size_t{0});
     };

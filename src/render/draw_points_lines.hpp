@@ -5,6 +5,7 @@
 #include "rasterize/item_bins.hpp"
 #include "rasterize/sample_buffer.hpp"
 #include "rasterize/splat.hpp"
+#include "rasterize/strip_sorted.hpp"
 #include "rasterize/wide_line.hpp"
 #include "rasterize/worker_team.hpp"
 #include "render/point_colour.hpp"
@@ -17,8 +18,9 @@
 #include <vector>
 
 // One object's points and segments drawn on a team of threads, after its facets and into the
-// same colour and depth (or samples): projected and coloured in batches, binned into the strips
-// of rows, then drawn strip by strip in their order, so any thread count gives the same picture.
+// same colour and depth (or samples): moved by the model matrix one vertex at a time (no posed
+// copy), projected and coloured in batches, binned into the strips of rows, then drawn strip by
+// strip in their order, so any thread count gives the same picture.
 namespace raster::detail {
 
 // Where a frame draws: its pixels (and depth, when tested), or its samples.
@@ -48,10 +50,15 @@ inline std::size_t point_batch(std::size_t items, int threads) noexcept {
     return std::clamp((items + share - 1) / share, std::size_t{4096}, std::size_t{1} << 18);
 }
 
+// Points per batch of splats, and batches a thread per round: a big cloud is drawn in rounds
+// whose buffers stay in cache and are reused, so its memory does not grow with the cloud.
+constexpr std::size_t kSplatBatch = 16384;
+constexpr int kSplatBatchesPerThread = 8;
+
 // The splat diameter for `source`'s points: the scene's, or sized from their box on screen.
 template <typename Camera>
 double point_size(const PointProjection<Camera>& projection, const PointsAndLines& style, const Mesh& source,
-                  const Mesh& posed, WorkerTeam& team) {
+                  const VertexPose& pose, WorkerTeam& team) {
     if (style.point_size) return *style.point_size;
     struct Box {
         double low_x = std::numeric_limits<double>::infinity(), low_y = low_x;
@@ -64,7 +71,7 @@ double point_size(const PointProjection<Camera>& projection, const PointsAndLine
         Box& box = boxes[static_cast<std::size_t>(b)];
         const std::size_t begin = static_cast<std::size_t>(b) * per, end = std::min(count, begin + per);
         for (std::size_t k = begin; k < end; ++k) {
-            const std::optional<ScreenPoint> p = projection.point(posed.positions[source.points[k]]);
+            const std::optional<ScreenPoint> p = projection.point(pose.position(source.positions[source.points[k]]));
             if (!p) continue;
             box.low_x = std::min(box.low_x, p->x), box.high_x = std::max(box.high_x, p->x);
             box.low_y = std::min(box.low_y, p->y), box.high_y = std::max(box.high_y, p->y);
@@ -81,11 +88,11 @@ double point_size(const PointProjection<Camera>& projection, const PointsAndLine
     return automatic_point_size((all.high_x - all.low_x) * (all.high_y - all.low_y), all.seen);
 }
 
-// Draws `source`'s points and segments over `posed` (its vertices in the world, with vertex
-// normals), coloured by `shader` as PointColour says. Throws std::invalid_argument for sizes out
-// of range or indices out of bounds, before drawing anything.
+// Draws the object's points and segments, its vertices moved by its model matrix (vertex
+// normals as posed() moves them), coloured by `shader` as PointColour says. Throws
+// std::invalid_argument for sizes out of range or indices out of bounds, before drawing anything.
 template <typename Camera, typename Shader>
-void draw_points_lines(const Camera& camera, const PointsAndLines& style, const SceneObject& object, const Mesh& posed,
+void draw_points_lines(const Camera& camera, const PointsAndLines& style, const SceneObject& object,
                        const Shader& shader, WorkerTeam& team, const StripLayout& layout, const PointTargets& target) {
     const Mesh& source = *object.mesh;
     if (source.points.empty() && source.segments.empty()) return;
@@ -93,27 +100,10 @@ void draw_points_lines(const Camera& camera, const PointsAndLines& style, const 
     check_points_lines(source);
     const PointProjection<Camera> projection(camera);
     const PointColour<Shader> colour(shader, object);
+    const VertexPose pose(object.model);
     const bool sampled = target.samples != nullptr;
     const double reach = sampled ? 0.5 : 0.0;  // samples lie up to half a pixel from their pixel's centre
     const int width = layout.width;
-
-    const double radius = point_size(projection, style, source, posed, team) / 2.0;
-    const std::size_t points = source.points.size(), per_point = point_batch(points, team.size());
-    std::vector<ItemBins<Splat>> splats((points + per_point - 1) / per_point, ItemBins<Splat>(layout));
-    team.for_each(static_cast<int>(splats.size()), [&](int b) {
-        ItemBins<Splat>& bins = splats[static_cast<std::size_t>(b)];
-        const std::size_t begin = static_cast<std::size_t>(b) * per_point, end = std::min(points, begin + per_point);
-        bins.reserve(end - begin);
-        for (std::size_t k = begin; k < end; ++k) {
-            const std::uint32_t i = source.points[k];
-            const std::optional<ScreenPoint> p = projection.point(posed.positions[i]);
-            if (!p || p->x < -radius - 1.0 || p->x > width + radius + 1.0) continue;  // off the image
-            const Splat splat{static_cast<float>(p->x), static_cast<float>(p->y), projection.nearer(p->depth, radius),
-                              colour.srgb(posed, i)};
-            bins.add(splat, p->y - radius - reach, p->y + radius + reach);
-        }
-        bins.finish();
-    });
 
     const double half_width = style.line_width / 2.0;
     const std::size_t segments = source.segments.size(), per_segment = point_batch(segments, team.size());
@@ -125,9 +115,11 @@ void draw_points_lines(const Camera& camera, const PointsAndLines& style, const 
         bins.reserve(end - begin);
         for (std::size_t k = begin; k < end; ++k) {
             const auto [i, j] = source.segments[k];
-            const std::optional<ScreenSegment> s = projection.segment(posed.positions[i], posed.positions[j]);
+            const glm::vec3 at_i = pose.position(source.positions[i]), at_j = pose.position(source.positions[j]);
+            const std::optional<ScreenSegment> s = projection.segment(at_i, at_j);
             if (!s) continue;
-            const LinearRgb ci = colour.linear(posed, i), cj = colour.linear(posed, j);
+            const LinearRgb ci = colour.linear(posed_corner(source, pose, i, at_i));
+            const LinearRgb cj = colour.linear(posed_corner(source, pose, j, at_j));
             const WideLine line{s->a.x,
                                 s->a.y,
                                 s->b.x,
@@ -142,30 +134,64 @@ void draw_points_lines(const Camera& camera, const PointsAndLines& style, const 
         }
         bins.finish();
     });
+    if (!lines.empty()) {
+        team.for_each(layout.count(), [&](int s) {
+            const PixelRect strip = layout.strip(s);
+            const auto line_width = static_cast<float>(style.line_width);
+            for (const ItemBins<WideLine>& bins : lines) {
+                bins.for_each_in(s, [&](const WideLine& line) {
+                    if (sampled) {
+                        draw_wide_line_samples(*target.samples, target.depth_test, line, line_width, strip,
+                                               target.offsets);
+                    } else {
+                        draw_wide_line(*target.framebuffer, target.depth, line, line_width, strip);
+                    }
+                });
+            }
+        });
+    }
 
+    // Splats after every line, in rounds of batches: each strip meets them in the order of the points.
+    const std::size_t points = source.points.size();
+    if (points == 0) return;
+    const double radius = point_size(projection, style, source, pose, team) / 2.0;
     const auto splat_radius = static_cast<float>(radius);
-    team.for_each(layout.count(), [&](int s) {
-        const PixelRect strip = layout.strip(s);
-        for (const ItemBins<WideLine>& bins : lines) {
-            bins.for_each_in(s, [&](const WideLine& line) {
-                const auto line_width = static_cast<float>(style.line_width);
-                if (sampled) {
-                    draw_wide_line_samples(*target.samples, target.depth_test, line, line_width, strip, target.offsets);
-                } else {
-                    draw_wide_line(*target.framebuffer, target.depth, line, line_width, strip);
-                }
-            });
-        }
-        for (const ItemBins<Splat>& bins : splats) {
-            bins.for_each_in(s, [&](const Splat& splat) {
-                if (sampled) {
-                    draw_splat_samples(*target.samples, target.depth_test, splat, splat_radius, strip, target.offsets);
-                } else {
-                    draw_splat(*target.framebuffer, target.depth, splat, splat_radius, strip);
-                }
-            });
-        }
-    });
+    const std::size_t batches = (points + kSplatBatch - 1) / kSplatBatch;
+    std::vector<StripSorted<Splat>> round(
+        std::min(batches, static_cast<std::size_t>(kSplatBatchesPerThread) * static_cast<std::size_t>(team.size())),
+        StripSorted<Splat>(layout));
+    for (std::size_t first = 0; first < batches; first += round.size()) {
+        const std::size_t count = std::min(round.size(), batches - first);
+        team.for_each(static_cast<int>(count), [&](int b) {
+            StripSorted<Splat>& bins = round[static_cast<std::size_t>(b)];
+            const std::size_t begin = (first + static_cast<std::size_t>(b)) * kSplatBatch;
+            const std::size_t end = std::min(points, begin + kSplatBatch);
+            bins.refill(end - begin);
+            for (std::size_t k = begin; k < end; ++k) {
+                const std::uint32_t i = source.points[k];
+                const glm::vec3 at = pose.position(source.positions[i]);
+                const std::optional<ScreenPoint> p = projection.point(at);
+                if (!p || p->x < -radius - 1.0 || p->x > width + radius + 1.0) continue;  // off the image
+                const Splat splat{static_cast<float>(p->x), static_cast<float>(p->y),
+                                  projection.nearer(p->depth, radius), colour.srgb(posed_corner(source, pose, i, at))};
+                bins.add(splat, p->y - radius - reach, p->y + radius + reach);
+            }
+            bins.finish();
+        });
+        team.for_each(layout.count(), [&](int s) {
+            const PixelRect strip = layout.strip(s);
+            for (std::size_t b = 0; b < count; ++b) {
+                round[b].for_each_in(s, [&](const Splat& splat) {
+                    if (sampled) {
+                        draw_splat_samples(*target.samples, target.depth_test, splat, splat_radius, strip,
+                                           target.offsets);
+                    } else {
+                        draw_splat(*target.framebuffer, target.depth, splat, splat_radius, strip);
+                    }
+                });
+            }
+        });
+    }
 }
 
 }  // namespace raster::detail

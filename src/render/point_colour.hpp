@@ -2,6 +2,7 @@
 
 #include <raster/render/scene.hpp>
 
+#include "geometry/posing.hpp"
 #include "rasterize/facet_corners.hpp"
 
 #include <variant>
@@ -9,6 +10,13 @@
 // The colour of a vertex drawn as a point or a line end: lit by the object's own shader when the
 // vertex has a normal, else its colour times the material's (doc/conventions.md#points-and-lines).
 namespace raster::detail {
+
+// Vertex i of `mesh` moved by `pose`, as the vertex stage sees it (vertex_varying's corner of a
+// posed copy); `position` is pose.position(mesh.positions[i]), already worked out.
+inline Corner posed_corner(const Mesh& mesh, const VertexPose& pose, std::size_t i, glm::vec3 position) noexcept {
+    return {position, pose.normal(mesh.normals[i]), mesh.uvs.empty() ? glm::vec2(0.0F) : mesh.uvs[i],
+            mesh.colours.empty() ? LinearRgb{1.0F, 1.0F, 1.0F} : mesh.colours[i]};
+}
 
 template <typename Shader>
 class PointColour {
@@ -21,21 +29,20 @@ public:
         }
     }
 
-    // Vertex i of `posed` (world positions and normals); checked by check_drawable.
-    [[nodiscard]] LinearRgb linear(const Mesh& posed, std::size_t i) const noexcept {
-        const LinearRgb tint = posed.colours.empty() ? LinearRgb{1.0F, 1.0F, 1.0F} : posed.colours[i];
-        if (unit_or_zero(posed.normals[i]) == glm::vec3(0.0F)) return base_ * tint;  // no normal: nothing to light
-        return linear_from_srgb(lit(posed, i));
+    // A vertex in the world (posed_corner), with its colour as tint.
+    [[nodiscard]] LinearRgb linear(const Corner& vertex) const noexcept {
+        if (unit_or_zero(vertex.normal) == glm::vec3(0.0F))
+            return base_ * vertex.colour;  // no normal: nothing to light
+        return linear_from_srgb(lit(vertex));
     }
-    [[nodiscard]] Rgb srgb(const Mesh& posed, std::size_t i) const noexcept {
-        const LinearRgb tint = posed.colours.empty() ? LinearRgb{1.0F, 1.0F, 1.0F} : posed.colours[i];
-        if (unit_or_zero(posed.normals[i]) == glm::vec3(0.0F)) return srgb_from_linear(base_ * tint);
-        return lit(posed, i);
+    [[nodiscard]] Rgb srgb(const Corner& vertex) const noexcept {
+        if (unit_or_zero(vertex.normal) == glm::vec3(0.0F)) return srgb_from_linear(base_ * vertex.colour);
+        return lit(vertex);
     }
 
 private:
-    [[nodiscard]] Rgb lit(const Mesh& posed, std::size_t i) const noexcept {
-        const typename Shader::Varying v = vertex_varying(shader_, posed, i);
+    [[nodiscard]] Rgb lit(const Corner& vertex) const noexcept {
+        const typename Shader::Varying v = shader_.vertex(vertex);
         if constexpr (NeedsFootprint<Shader>) {
             return shader_.pixel(v, v - v, v - v);  // a point samples its texture at the finest level
         } else {

@@ -1,5 +1,6 @@
 // Points and lines read from OBJ, PLY and glTF into Mesh::points and Mesh::segments, with their
 // colours and normals, alone or beside faces (doc/conventions.md#points-and-lines).
+#include <raster/image/colour.hpp>
 #include <raster/io/model_file.hpp>
 #include <raster/io/obj_file.hpp>
 
@@ -7,10 +8,13 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 using raster::Model;
 using test_support::ScratchDir;
@@ -150,6 +154,33 @@ TEST(PointsAndLines, APlyPointCloudKeepsItsSrgbColoursAndNormals) {
     ASSERT_EQ(mesh.colours.size(), mesh.positions.size());
     EXPECT_EQ(mesh.colours[mesh.points[0]], (raster::LinearRgb{1, 0, 0}));
     EXPECT_NEAR(mesh.colours[mesh.points[1]].g, 0.2158605F, 1e-5F);  // the sRGB byte 128 in linear light
+}
+
+// Every byte a colour channel can hold comes out as the sRGB formula gives it for that byte read
+// as byte / 255, whether looked up or worked out.
+TEST(PointsAndLines, EveryPlyColourByteIsTheSrgbFormulasValue) {
+    const ScratchDir dir;
+    std::vector<std::array<float, 6>> points;
+    std::vector<std::array<int, 3>> rgb;
+    for (int b = 0; b < 256; ++b) {
+        points.push_back({static_cast<float>(b), 0, 0, 0, 0, 0});
+        rgb.push_back({b, 255 - b, b});
+    }
+    test_support::write_text(dir / "bytes.ply", ply_cloud(points, rgb));
+    const Model model = raster::read_model(dir / "bytes.ply");
+    ASSERT_EQ(model.parts.size(), 1U);
+    const raster::Mesh& mesh = model.parts[0].mesh;
+    ASSERT_EQ(mesh.points.size(), 256U);
+    ASSERT_EQ(mesh.colours.size(), mesh.positions.size());
+    const auto formula = [](int b) {
+        return static_cast<float>(raster::linear_from_srgb_channel(static_cast<float>(b) / 255.0F));
+    };
+    for (std::size_t k = 0; k < 256; ++k) {
+        const std::uint32_t i = mesh.points[k];
+        const int b = static_cast<int>(mesh.positions[i].x);
+        EXPECT_EQ(mesh.colours[i].r, formula(b)) << "byte " << b;
+        EXPECT_EQ(mesh.colours[i].g, formula(255 - b)) << "byte " << 255 - b;
+    }
 }
 
 TEST(PointsAndLines, AssimpsPointAndLineModelsRead) {

@@ -99,3 +99,44 @@ TEST(PointsAndLinesThreads, ThePictureIsTheSameOnAnyNumberOfThreads) {
         }
     }
 }
+
+// A cloud big enough to be drawn in several rounds of batches draws as its points would one
+// after another: here as slices of it, each a small object of its own, drawn in order. Each spot
+// is taken by many points of different colours at one depth, so the last one drawn shows.
+TEST(PointsAndLinesThreads, ACloudDrawnInRoundsIsItsPointsDrawnInTheirOrder) {
+    constexpr std::size_t kSpots = 1000, kPoints = 400 * kSpots, kSlice = 10000;
+    const std::shared_ptr<raster::Mesh> spots = fibonacci_sphere(kSpots);
+    auto cloud = std::make_shared<raster::Mesh>();
+    for (std::size_t i = 0; i < kPoints; ++i) {
+        cloud->points.push_back(static_cast<std::uint32_t>(i));
+        cloud->positions.push_back(spots->positions[i % kSpots]);
+        cloud->normals.push_back(glm::vec3(0.0F));  // drawn in their colours
+        const auto shade = [&](std::size_t k) { return static_cast<float>((i * k) % 251) / 250.0F; };
+        cloud->colours.push_back({shade(7), shade(13), shade(31)});
+    }
+    raster::Scene whole = scene_of(cloud, 96);
+    whole.points_and_lines.point_size = 3.0;
+    raster::Scene sliced = whole;
+    sliced.objects.clear();
+    for (std::size_t begin = 0; begin < kPoints; begin += kSlice) {
+        auto slice = std::make_shared<raster::Mesh>();
+        for (std::size_t i = begin; i < begin + kSlice; ++i) {
+            slice->points.push_back(static_cast<std::uint32_t>(slice->positions.size()));
+            slice->positions.push_back(cloud->positions[i]);
+            slice->normals.push_back(cloud->normals[i]);
+            slice->colours.push_back(cloud->colours[i]);
+        }
+        sliced.objects.push_back(whole.objects.front());
+        sliced.objects.back().mesh = std::move(slice);
+    }
+    for (const int samples : {1, 4}) {
+        for (const int threads : {1, 3}) {
+            Framebuffer expected(96, 96), drawn(96, 96);
+            raster::DepthBuffer depth;
+            raster::render(expected, sliced, depth, {.threads = threads, .samples = samples});
+            raster::render(drawn, whole, depth, {.threads = threads, .samples = samples});
+            EXPECT_TRUE(std::equal(expected.pixels(), expected.pixels() + 96 * 96 * 3, drawn.pixels()))
+                << threads << " threads, " << samples << " samples";
+        }
+    }
+}

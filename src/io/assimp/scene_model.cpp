@@ -42,10 +42,22 @@ glm::dmat4 matrix_of(const aiMatrix4x4& m) {
 
 bool finite(const aiVector3D& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
+// What linear_from_srgb_channel gives each byte b read as b / 255 in float, as assimp reads
+// colour bytes: a cloud's millions of colours are looked up, not raised to a power each.
+std::array<float, 256> linear_bytes() {
+    std::array<float, 256> linear{};
+    for (std::size_t b = 0; b < linear.size(); ++b)
+        linear[b] = static_cast<float>(linear_from_srgb_channel(static_cast<float>(b) / 255.0F));
+    return linear;
+}
+
 // A file's colour channel in linear light: clamped to [0, 1], white where it is not a number.
-float linear_channel(float written, ColourSpace space) {
+float linear_channel(float written, ColourSpace space, const std::array<float, 256>& bytes) {
     const float c = std::isfinite(written) ? std::clamp(written, 0.0F, 1.0F) : 1.0F;
-    return space == ColourSpace::srgb ? static_cast<float>(linear_from_srgb_channel(c)) : c;
+    if (space != ColourSpace::srgb) return c;
+    const auto b = static_cast<std::size_t>(c * 255.0F + 0.5F);
+    if (static_cast<float>(b) / 255.0F == c) return bytes[b];  // the same input, so the same value
+    return static_cast<float>(linear_from_srgb_channel(c));
 }
 
 class SceneReader {
@@ -144,8 +156,9 @@ private:
             }
             if (has_colours) {  // alpha is not drawn: surfaces are opaque
                 const aiColor4D& c = mesh.mColors[0][v];
-                soup_.colours.push_back(
-                    {linear_channel(c.r, colours_), linear_channel(c.g, colours_), linear_channel(c.b, colours_)});
+                soup_.colours.push_back({linear_channel(c.r, colours_, linear_bytes_),
+                                         linear_channel(c.g, colours_, linear_bytes_),
+                                         linear_channel(c.b, colours_, linear_bytes_)});
             }
             if (has_tangents) soup_.tangents.push_back(tangent_of(mesh, v, world, handedness));
         }
@@ -271,6 +284,7 @@ private:
     std::filesystem::path path_;
     std::string name_;
     ColourSpace colours_;
+    std::array<float, 256> linear_bytes_ = linear_bytes();
     const ObjOptions& options_;
     Model& model_;
     PolygonSoup soup_;
