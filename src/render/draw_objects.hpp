@@ -33,11 +33,9 @@ namespace raster::detail {
 constexpr std::size_t kSmallestBatch = 2048;
 constexpr std::size_t kLargestBatch = 8192;
 
-// Clears to the background, prepares depth only when the scene needs it, and draws every object
-// in three parallel steps on `team`: its vertices posed and put
-// through the front end `front_for(mesh, shader)` in batches, then its facets
-// likewise, each batch binned into strips of rows, then the strips, cleared on the first
-// object's pass and drawn with every batch's triangles in facet order.
+// Clears to the background, prepares depth only when the scene needs it, and draws each object in
+// three parallel steps on `team`: vertices posed and through `front_for(mesh, shader)` in batches,
+// facets likewise, binned into strips of rows, then the strips, drawn in facet order.
 // Multisampling: one with `samples` draws into its sample buffer instead, at its offsets, and
 // resolves every strip into the framebuffer at the end (and the coverage into `alpha`, if any).
 struct Multisampling {
