@@ -30,7 +30,7 @@ std::vector<glm::vec4> tangents_from_uvs(const Mesh& mesh) {
     const auto normal_at = [&](std::uint32_t i) {
         return mesh.normals.size() == n ? unit_or_zero(mesh.normals[i]) : glm::vec3(0.0F);
     };
-    std::vector<glm::vec3> along_u(n, glm::vec3(0.0F)), along_v(n, glm::vec3(0.0F));
+    std::vector<glm::vec3> along_u(n, glm::vec3(0.0F)), along_v(n, glm::vec3(0.0F)), facing(n, glm::vec3(0.0F));
     for (const Facet& facet : mesh.facets) {
         const auto [i0, i1, i2] = facet.corners;
         if (i0 >= n || i1 >= n || i2 >= n) continue;
@@ -50,11 +50,14 @@ std::vector<glm::vec4> tangents_from_uvs(const Mesh& mesh) {
                 corner_angle(mesh.positions[at[k]], mesh.positions[at[(k + 1) % 3]], mesh.positions[at[(k + 2) % 3]]);
             along_u[at[k]] += unit_or_zero(u - normal * glm::dot(normal, u)) * angle;
             along_v[at[k]] += unit_or_zero(v - normal * glm::dot(normal, v)) * angle;
+            facing[at[k]] += unit_or_zero(facet.normal) * angle;
         }
     }
     std::vector<glm::vec4> tangents(n);
     for (std::size_t i = 0; i < n; ++i) {
-        const glm::vec3 normal = normal_at(static_cast<std::uint32_t>(i));
+        glm::vec3 normal = normal_at(static_cast<std::uint32_t>(i));
+        // Without a vertex normal, the facets' decide the handedness, as the shader then leans theirs.
+        if (!(glm::dot(normal, normal) > 0.0F)) normal = unit_or_zero(facing[i]);
         // Gram-Schmidt: the u direction less its part along the normal.
         glm::vec3 t = unit_or_zero(along_u[i] - normal * glm::dot(normal, along_u[i]));
         if (!(glm::dot(t, t) > 0.0F)) t = any_perpendicular(normal);

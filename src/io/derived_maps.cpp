@@ -39,8 +39,11 @@ float data_channel(const Framebuffer& image, int x, int y, char channel) noexcep
 Texture roughness_metallic_map(const Texture* roughness, char roughness_channel, const Texture* metallic,
                                char metallic_channel) {
     int width = 1, height = 1;
+    std::size_t most = 0;  // the size of the map with more texels: two thin maps make no square one
     for (const Texture* map : {roughness, metallic}) {
-        if (map != nullptr) width = std::max(width, map->width()), height = std::max(height, map->height());
+        const std::size_t texels =
+            map == nullptr ? 0 : static_cast<std::size_t>(map->width()) * static_cast<std::size_t>(map->height());
+        if (texels > most) most = texels, width = map->width(), height = map->height();
     }
     std::vector<std::uint8_t> bytes(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3);
     std::size_t at = 0;

@@ -13,7 +13,7 @@ namespace raster::detail {
 
 // One linear map holding roughness in green and metallic in blue, as MetallicRoughness reads
 // them; either map may be null, and its channel is then 255 (its factor alone). Each is read
-// at the nearest texel of a grid as wide and as tall as the larger of the two. Red is 0.
+// at the nearest texel of a grid the size of the one with more texels. Red is 0.
 [[nodiscard]] Texture roughness_metallic_map(const Texture* roughness, char roughness_channel, const Texture* metallic,
                                              char metallic_channel);
 

@@ -6,6 +6,7 @@
 #include <raster/image/framebuffer.hpp>
 
 #include <array>
+#include <cmath>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -260,6 +261,9 @@ Model model_from_wire(std::span<const std::uint8_t> bytes) {
                 moved->offset = wire.value<glm::vec2>();
                 moved->rotation = wire.value<float>();
                 moved->scale = wire.value<glm::vec2>();
+                const glm::vec2 all[] = {moved->offset, moved->scale, glm::vec2(moved->rotation)};
+                for (const glm::vec2 v : all)
+                    if (!std::isfinite(v.x) || !std::isfinite(v.y)) WireReader::broken();
             }
         }
         model.parts.push_back(std::move(part));
@@ -286,6 +290,11 @@ Model model_from_wire(std::span<const std::uint8_t> bytes) {
         const bool far = wire.value<std::uint8_t>() != 0;
         const auto distance = wire.value<double>();
         if (far) camera.far = distance;
+        // What the glTF pass guarantees: a lens in range (a place out of float range is refused when drawn).
+        if (!(camera.yfov_degrees > 0.0 && camera.yfov_degrees < 180.0) || !(camera.half_height > 0.0) ||
+            !(camera.near >= 0.0) || !std::isfinite(camera.half_height) || !std::isfinite(camera.near) ||
+            (far && !(std::isfinite(distance) && distance > camera.near)))
+            WireReader::broken();
     }
     if (!wire.done()) WireReader::broken();
     return model;

@@ -7,7 +7,9 @@ namespace raster {
 
 ModelView through_camera(ModelView view, const ModelCamera& camera, const Model& model) {
     const Bounds bounds = bounds_of(model);
-    const double ahead = glm::dot(bounds.centre() - camera.eye, camera.forward);
+    // The bounds are in raster's world, the camera in the file's: z mirrored back.
+    const glm::dvec3 centre = bounds.centre() * glm::dvec3(1.0, 1.0, -1.0);
+    const double ahead = glm::dot(centre - camera.eye, camera.forward);
     const double distance = ahead > 1e-6 * bounds.radius ? ahead : bounds.radius;
     view.eye = camera.eye;
     view.target = camera.eye + camera.forward * distance;

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <glm/mat2x2.hpp>
+#include <glm/matrix.hpp>
 
 namespace raster {
 namespace {
@@ -18,6 +20,22 @@ bool usable(const PointLight& light) noexcept {
                         std::isfinite(f.quadratic);
     return finite && f.constant >= 0.0F && f.linear >= 0.0F && f.quadratic >= 0.0F &&
            (f.constant > 0.0F || f.linear > 0.0F || f.quadratic > 0.0F);
+}
+
+// The vertex frame (t, w) turned to the coordinates a texture transform A moves the map's to:
+// [t' b'] = [t b] A^-1 (doc/conventions.md#normal-maps); zero, for the cotangent frame, where A is singular.
+glm::vec4 moved_tangent(glm::vec4 tangent, glm::vec3 n, const TextureTransform& moved) noexcept {
+    if (moved.identity()) return tangent;
+    const UvFootprint columns = moved_uv(moved, {0.0F, 0.0F}, {{1.0F, 0.0F}, {0.0F, 1.0F}}).footprint;
+    const glm::mat2 a(columns.per_pixel_x, columns.per_pixel_y);
+    const float det = glm::determinant(a);
+    if (!(std::abs(det) > 1e-12F) || !std::isfinite(det)) return glm::vec4(0.0F);
+    const glm::mat2 inverse = glm::inverse(a);
+    const glm::vec3 t(tangent);
+    const glm::vec3 b = glm::cross(n, t) * (tangent.w < 0.0F ? -1.0F : 1.0F);
+    const glm::vec3 along_u = t * inverse[0][0] + b * inverse[0][1];
+    const glm::vec3 along_v = t * inverse[1][0] + b * inverse[1][1];
+    return {along_u, glm::dot(glm::cross(n, along_u), along_v) < 0.0F ? -1.0F : 1.0F};
 }
 
 }  // namespace
@@ -58,13 +76,10 @@ MaterialSample MetallicRoughnessLighting::sample(const MaterialPoint& point) con
         out.occlusion = 1.0F + m.occlusion_strength * (read(m.occlusion_map, m.occlusion_transform).r - 1.0F);
     if (m.emissive_map) out.emissive = out.emissive * read(m.emissive_map, m.emissive_transform);
     if (m.normal_map && glm::dot(out.normal, out.normal) > 0.0F) {
-        // The vertex tangent frame follows u and v; a transform that turns or mirrors the map's
-        // coordinates leaves it to the cotangent frame of the moved coordinates.
         const TextureTransform& moved = m.normal_transform;
-        const bool keeps_frame = moved.rotation == 0.0F && moved.scale.x > 0.0F && moved.scale.y > 0.0F;
         const UvFootprint footprint = moved_uv(moved, point.uv, point.footprint).footprint;
         out.normal = normal_mapped(out.normal, read(m.normal_map, moved), m.normal_scale,
-                                   keeps_frame ? point.tangent : glm::vec4(0.0F), point.position_per_x,
+                                   moved_tangent(point.tangent, out.normal, moved), point.position_per_x,
                                    point.position_per_y, footprint);
     }
     return out;

@@ -67,6 +67,21 @@ TEST(Tangents, HandednessFlipsWithMirroredUvs) {
     }
 }
 
+// A mesh drawn by its facets' normals (no vertex normals) takes its handedness from them.
+TEST(Tangents, WithoutVertexNormalsTheFacetsDecideTheHandedness) {
+    raster::Mesh upright = square({{0, 1}, {1, 1}, {1, 0}, {0, 0}});
+    raster::Mesh mirrored = square({{1, 1}, {0, 1}, {0, 0}, {1, 0}});
+    upright.normals.clear(), mirrored.normals.clear();
+    const std::vector<glm::vec4> ahead = raster::tangents_from_uvs(upright);
+    const std::vector<glm::vec4> back = raster::tangents_from_uvs(mirrored);
+    ASSERT_EQ(back.size(), 4U);
+    for (std::size_t i = 0; i < 4; ++i) {
+        expect_near(bitangent({0, 0, -1}, ahead[i]), {0, 1, 0});
+        expect_near(bitangent({0, 0, -1}, back[i]), {0, 1, 0});
+        EXPECT_EQ(back[i].w, -ahead[i].w);
+    }
+}
+
 // Texture coordinates all equal, along a line, or not finite, and normals of no length: every
 // tangent is still a unit vector perpendicular to its normal, w is ±1, nothing is NaN.
 TEST(Tangents, DegenerateUvsStayFinite) {

@@ -251,3 +251,17 @@ TEST(RenderCamera, OutOfRangeSaysHowManyThereAre) {
     const Model without = raster::read_model(write_square(dir.path(), mapped_material("")));
     EXPECT_EQ(raster::camera_refusal(without, 0), "--camera 0: the model carries no cameras");
 }
+
+TEST(RenderCamera, AimsAtThePointAheadNearestTheModelsCentreInTheFilesCoordinates) {
+    const ScratchDir dir;
+    // The square 10 ahead of a camera at the origin looking down the file's -Z.
+    const Model model = raster::read_model(
+        write_square(dir.path(), mapped_material(""),
+                     R"( "cameras": [{"type": "perspective", "perspective": {"yfov": 0.5, "znear": 0.1}}],)",
+                     R"([{"children": [1, 2]}, {"mesh": 0, "translation": [0, 0, -10]}, {"camera": 0}])"));
+    ASSERT_EQ(model.cameras.size(), 1U);
+    const raster::ModelView view = raster::through_camera({}, model.cameras[0], model);
+    ASSERT_TRUE(view.target.has_value());
+    EXPECT_NEAR(view.target->z, -10.0, 1e-6);
+    EXPECT_NEAR(view.target->x, 0.0, 1e-6);
+}

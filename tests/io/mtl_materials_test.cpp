@@ -186,6 +186,19 @@ TEST(MtlPbr, RoughnessAndMetallicMapsMultiplyTheirFactors) {
     EXPECT_TRUE(model.warnings.empty()) << model.warnings.front();
 }
 
+TEST(MtlPbr, ThinRoughnessAndMetallicMapsCombineAtTheSizeOfTheOneWithMoreTexels) {
+    const ScratchDir dir;
+    // 4 x 1 and 1 x 3: a 4 x 3 map would hold more than either; the combined one is 4 x 1.
+    const std::vector<std::uint8_t> wide(4 * 3, 51), tall(3 * 3, 102);
+    const Model model = cube(dir, "Pr 1\nPm 1\nmap_Pr r.png\nmap_Pm m.png\n",
+                             {{"r.png", raster::Framebuffer(4, 1, wide)}, {"m.png", raster::Framebuffer(1, 3, tall)}});
+    ASSERT_TRUE(model.parts.at(0).metallic_roughness.has_value());
+    const auto& map = model.parts[0].metallic_roughness->metallic_roughness_map;
+    ASSERT_TRUE(map);
+    EXPECT_EQ(map->width(), 4);
+    EXPECT_EQ(map->height(), 1);
+}
+
 TEST(MtlPbr, AMissingRoughnessMapWarnsAndLeavesPrAlone) {
     const ScratchDir dir;
     const Model model = cube(dir, "Pr 0.5\nmap_Pr gone.png\n");

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <numbers>
 #include <gtest/gtest.h>
 
 using raster::LinearRgb;
@@ -205,6 +206,22 @@ TEST(MetallicRoughness, NormalMapFollowsTheVertexTangentTurnedAQuarter) {
     n = toward_v.sample(p).normal;
     EXPECT_NEAR(n.y, -0.71F, 0.02F);
     EXPECT_NEAR(n.x, 0.0F, 0.02F);
+}
+
+TEST(MetallicRoughness, NormalMapTurnedByItsTextureTransformTurnsTheVertexFrameWithIt) {
+    MetallicRoughness m;
+    m.normal_map = one_texel(218, 128, 218, raster::TexelEncoding::linear);  // toward +u'
+    MaterialPoint p = facing(kNormal);
+    p.tangent = {1, 0, 0, 1};                                        // u along +x, v along +y
+    m.normal_transform.rotation = std::numbers::pi_v<float> / 2.0F;  // u' grows where v falls
+    const glm::vec3 turned = MetallicRoughnessLighting(m, {}, nullptr, {}, {}, kNormal).sample(p).normal;
+    EXPECT_NEAR(turned.x, 0.0F, 0.02F);
+    EXPECT_NEAR(turned.y, -0.71F, 0.02F);
+    m.normal_transform = {};
+    m.normal_transform.scale = {-1.0F, 1.0F};  // u mirrored: u' grows along -x
+    const glm::vec3 mirrored = MetallicRoughnessLighting(m, {}, nullptr, {}, {}, kNormal).sample(p).normal;
+    EXPECT_NEAR(mirrored.x, -0.71F, 0.02F);
+    EXPECT_NEAR(mirrored.y, 0.0F, 0.02F);
 }
 
 TEST(MetallicRoughness, ZeroVectorNormalTexelLeavesTheSurfaceNormal) {

@@ -15,6 +15,10 @@
 namespace raster::detail {
 namespace {
 
+std::size_t texels_of(const std::shared_ptr<const Texture>& map) noexcept {
+    return map ? static_cast<std::size_t>(map->width()) * static_cast<std::size_t>(map->height()) : 0;
+}
+
 LinearMaterial material_from(const tinyobj::material_t& m) {
     const auto colour = [](const tinyobj::real_t* c) {
         const auto usable = [](tinyobj::real_t v) { return std::isfinite(v) ? std::max(0.0F, v) : 0.0F; };
@@ -70,13 +74,14 @@ MetallicRoughness MtlMaterials::metallic_roughness(const ModelPart& part, const 
     const Map metallic = map(m.metallic_texname, directory, part, "with Pm alone");
     if (roughness || metallic) {
         const char r = m.roughness_texopt.imfchan, p = m.metallic_texopt.imfchan;
-        out.metallic_roughness_map = derived({roughness.get(), metallic.get(), r, p, 0.0F}, [&] {
-            return roughness_metallic_map(roughness.get(), r, metallic.get(), p);
-        });
+        const std::size_t texels = std::max(texels_of(roughness), texels_of(metallic));
+        out.metallic_roughness_map =
+            derived({roughness.get(), metallic.get(), r, p, 0.0F}, texels, "map_Pr and map_Pm combined", m.name,
+                    [&] { return roughness_metallic_map(roughness.get(), r, metallic.get(), p); });
     }
     if (const Map normals = map(m.normal_texname, directory, part, "without its normal map")) {
-        out.normal_map = derived({normals.get(), nullptr, 'n', 'n', 0.0F},
-                                 [&] { return Texture(normals->level(0), TexelEncoding::linear); });
+        out.normal_map = derived({normals.get(), nullptr, 'n', 'n', 0.0F}, texels_of(normals), "norm map read as data",
+                                 m.name, [&] { return Texture(normals->level(0), TexelEncoding::linear); });
         const float scale = m.normal_texopt.bump_multiplier;
         out.normal_scale = std::isfinite(scale) ? scale : 1.0F;
         if (!m.bump_texname.empty()) model_.warnings.push_back(said + "both norm and a bump map; drawing norm");
@@ -95,13 +100,24 @@ MtlMaterials::Map MtlMaterials::bump_normals(const tinyobj::material_t& m, const
     const char channel = m.bump_texopt.imfchan;
     const float scale = std::isfinite(m.bump_texopt.bump_multiplier) ? m.bump_texopt.bump_multiplier : 1.0F;
     const TextureWrap wrap = wrap_of(m.bump_texopt);
-    return derived({heights.get(), nullptr, channel, wrap == TextureWrap::clamp ? 'c' : 'w', scale},
+    return derived({heights.get(), nullptr, channel, wrap == TextureWrap::clamp ? 'c' : 'w', scale}, texels_of(heights),
+                   "bump map made into normals", m.name,
                    [&] { return normals_from_heights(*heights, channel, scale, wrap); });
 }
 
-MtlMaterials::Map MtlMaterials::derived(const DerivedKey& key, const std::function<Texture()>& build) {
+MtlMaterials::Map MtlMaterials::derived(const DerivedKey& key, std::size_t texels, const std::string& what,
+                                        const std::string& material, const std::function<Texture()>& build) {
     if (const auto found = derived_.find(key); found != derived_.end()) return found->second;
-    return derived_.emplace(key, std::make_shared<const Texture>(build())).first->second;
+    Map made;
+    if (texels <= kMaxModelTexels - texels_) {
+        texels_ += texels;
+        made = std::make_shared<const Texture>(build());
+    } else {
+        model_.warnings.push_back(name_ + ": material '" + printable(material) + "': its " + what +
+                                  " would take the model's textures past " + std::to_string(kMaxModelTexels) +
+                                  " texels; drawing it without");
+    }
+    return derived_.emplace(key, made).first->second;
 }
 
 MtlMaterials::Map MtlMaterials::map(const std::string& written, const std::filesystem::path& directory,

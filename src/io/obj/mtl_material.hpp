@@ -36,9 +36,11 @@ private:
     // warning saying how the material is drawn `instead`, when it cannot be read.
     Map map(const std::string& written, const std::filesystem::path& directory, const ModelPart& part,
             const std::string& instead);
-    // A map built from others, built once for the same sources.
+    // A map built from others, built once for the same sources, of `texels` counted against the
+    // model's budget; null, with a warning naming `what` for `material`, past it.
     using DerivedKey = std::tuple<const Texture*, const Texture*, char, char, float>;
-    Map derived(const DerivedKey& key, const std::function<Texture()>& build);
+    Map derived(const DerivedKey& key, std::size_t texels, const std::string& what, const std::string& material,
+                const std::function<Texture()>& build);
     // The tangent-space normals of the material's bump (height) map, if it has one that reads.
     Map bump_normals(const tinyobj::material_t& m, const std::filesystem::path& directory, const ModelPart& part);
     [[nodiscard]] MetallicRoughness metallic_roughness(const ModelPart& part, const tinyobj::material_t& m,
