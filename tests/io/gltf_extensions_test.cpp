@@ -1,13 +1,12 @@
-// glTF's material extensions and cameras, read from the file's JSON; stays whole: one written square serves every case.
+// glTF's material extensions and cameras, read from the file's JSON, on the shared written square.
 #include <raster/io/model_file.hpp>
 #include <raster/render/model_scene.hpp>
 
 #include "io/model_wire.hpp"
-#include "support/model_files.hpp"
+#include "support/gltf_square.hpp"
 #include "support/scratch.hpp"
 
 #include <cmath>
-#include <fstream>
 #include <numbers>
 #include <string>
 #include <gtest/gtest.h>
@@ -17,31 +16,11 @@ using test_support::ScratchDir;
 
 namespace {
 
-// A square of side 2 in the z = 0 plane, facing +z, u running with x; drawn with `material`
-// (JSON), by `nodes` (node 0 holds the mesh), its texture a 4 x 1 strip: red, red, blue, blue.
+// The shared square with its red and blue strip as texture 0, drawn with `material` (JSON) by
+// `nodes` (node 0 holds the mesh).
 std::filesystem::path write_square(const std::filesystem::path& dir, const std::string& material,
                                    const std::string& extras = "", const std::string& nodes = R"([{"mesh": 0}])") {
-    std::string buffer;
-    const auto put = [&](auto v) { buffer.append(reinterpret_cast<const char*>(&v), sizeof v); };
-    for (const float v : {-1.0F, -1.0F, 0.0F, 1.0F, -1.0F, 0.0F, 1.0F, 1.0F, 0.0F, -1.0F, 1.0F, 0.0F}) put(v);
-    for (const float v : {0.0F, 1.0F, 1.0F, 1.0F, 1.0F, 0.0F, 0.0F, 0.0F}) put(v);
-    for (const int i : {0, 1, 2, 0, 2, 3}) put(static_cast<std::uint16_t>(i));
-    std::ofstream(dir / "square.bin", std::ios::binary) << buffer;
-    raster::Framebuffer strip(4, 1);
-    for (int x = 0; x < 4; ++x) strip.set_pixel(x, 0, x < 2 ? raster::Rgb{255, 0, 0} : raster::Rgb{0, 0, 255});
-    test_support::write_png(dir / "strip.png", strip);
-    test_support::write_text(dir / "square.gltf", R"({"asset": {"version": "2.0"}, "scene": 0,)" + extras + R"(
-  "scenes": [{"nodes": [0]}], "nodes": )" + nodes + R"(,
-  "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "TEXCOORD_0": 1}, "indices": 2, "material": 0}]}],
-  "materials": [)" + material + R"(],
-  "images": [{"uri": "strip.png"}], "textures": [{"source": 0}],
-  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [-1, -1, 0], "max": [1, 1, 0]},
-                {"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC2"},
-                {"bufferView": 2, "componentType": 5123, "count": 6, "type": "SCALAR"}],
-  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48}, {"buffer": 0, "byteOffset": 48, "byteLength": 32},
-                  {"buffer": 0, "byteOffset": 80, "byteLength": 12}],
-  "buffers": [{"byteLength": 92, "uri": "square.bin"}]})");
-    return dir / "square.gltf";
+    return test_support::write_gltf_square(dir, material, extras, nodes, true);
 }
 
 // A matte base colour map, moved by `transform` (JSON of KHR_texture_transform, or "").

@@ -5,12 +5,12 @@
 #include <raster/render/samples.hpp>
 
 #include "io/model_wire.hpp"
+#include "support/gltf_square.hpp"
 #include "support/model_files.hpp"
 #include "support/scratch.hpp"
 
 #include <algorithm>
 #include <cstring>
-#include <fstream>
 #include <string>
 #include <gtest/gtest.h>
 
@@ -19,30 +19,10 @@ using test_support::ScratchDir;
 
 namespace {
 
-// A square facing -z with texture coordinates, its buffer in square.bin beside it, drawn with
-// `material` (JSON, or empty for a primitive without one).
+// The shared square, drawn with `material` (JSON, or empty for a primitive without one).
 std::filesystem::path write_square(const std::filesystem::path& dir, const std::string& material,
                                    const std::string& extras = "") {
-    std::string buffer;
-    const auto put = [&](auto v) { buffer.append(reinterpret_cast<const char*>(&v), sizeof v); };
-    for (const float v : {-1.0F, -1.0F, 0.0F, 1.0F, -1.0F, 0.0F, 1.0F, 1.0F, 0.0F, -1.0F, 1.0F, 0.0F}) put(v);
-    for (const float v : {0.0F, 1.0F, 1.0F, 1.0F, 1.0F, 0.0F, 0.0F, 0.0F}) put(v);
-    for (const int i : {0, 1, 2, 0, 2, 3}) put(static_cast<std::uint16_t>(i));
-    std::ofstream(dir / "square.bin", std::ios::binary) << buffer;
-    const std::string uses = material.empty() ? "" : R"(, "material": 0)";
-    const std::string materials = material.empty() ? "" : R"("materials": [)" + material + "],";
-    test_support::write_text(dir / "square.gltf", R"({"asset": {"version": "2.0"}, "scene": 0,)" + extras + R"(
-  "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
-  "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "TEXCOORD_0": 1}, "indices": 2)" +
-                                                      uses + R"(}]}],
-  )" + materials + R"(
-  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [-1, -1, 0], "max": [1, 1, 0]},
-                {"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC2"},
-                {"bufferView": 2, "componentType": 5123, "count": 6, "type": "SCALAR"}],
-  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48}, {"buffer": 0, "byteOffset": 48, "byteLength": 32},
-                  {"buffer": 0, "byteOffset": 80, "byteLength": 12}],
-  "buffers": [{"byteLength": 92, "uri": "square.bin"}]})");
-    return dir / "square.gltf";
+    return test_support::write_gltf_square(dir, material, extras);
 }
 
 double mean_level(const raster::Framebuffer& image) {
