@@ -74,6 +74,7 @@ void push_vertex(Mesh& mesh, const PolygonSoup& soup, const SoupCorner& corner, 
 void add_every_vertex_as_a_point(PolygonSoup& soup) {
     const bool paired = soup.normals.size() == soup.positions.size();
     const bool coloured = soup.colours.size() == soup.positions.size();
+    soup.points.reserve(soup.points.size() + soup.positions.size());
     for (std::size_t v = 0; v < soup.positions.size(); ++v) {
         const glm::vec3& p = soup.positions[v];
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) continue;
@@ -148,6 +149,23 @@ std::vector<std::pair<int, Mesh>> meshes_by_material(const PolygonSoup& soup, do
         meshes[triangle.material].facets.push_back(facet);
     }
     // Every point is a vertex of its own: a cloud of millions would only slow a shared index down.
+    // Its arrays are sized once, so that they are never copied as they grow.
+    std::map<int, std::size_t> cloud_sizes;
+    for (std::size_t i = 0, j = 0; i < soup.points.size(); i = j) {  // by runs: a cloud is one
+        while (j < soup.points.size() && soup.points[j].material == soup.points[i].material) ++j;
+        cloud_sizes[soup.points[i].material] += j - i;
+    }
+    for (const auto& [material, count] : cloud_sizes) {
+        Mesh& mesh = meshes[material];
+        const VertexArrays with = arrays[material];
+        const std::size_t size = mesh.positions.size() + count;
+        mesh.positions.reserve(size);
+        mesh.normals.reserve(size);
+        if (with.uvs) mesh.uvs.reserve(size);
+        if (with.colours) mesh.colours.reserve(size);
+        if (with.tangents) mesh.tangents.reserve(size);
+        mesh.points.reserve(mesh.points.size() + count);
+    }
     Mesh* cloud = nullptr;  // the last point's mesh: a cloud of one material looks it up once
     int cloud_material = 0;
     VertexArrays with;

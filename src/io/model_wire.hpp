@@ -1,5 +1,7 @@
 #pragma once
 
+#include "io/wire_bytes.hpp"
+
 #include <raster/io/model.hpp>
 
 #include <cstdint>
@@ -11,10 +13,13 @@
 // trusts nothing: every count is checked against the bytes that remain.
 namespace raster::detail {
 
-// About how many bytes append_model_wire writes for `model`: enough to reserve them at once.
-[[nodiscard]] std::size_t model_wire_size(const Model& model) noexcept;
+// Exactly how many bytes write_model_wire writes for `model`, counted without copying an array.
+[[nodiscard]] std::size_t model_wire_bytes(const Model& model);
 
-// Appends `model` to `out`; textures shared by parts are written once.
+// Writes `model` (into a span model_wire_bytes long, say); textures shared by parts are written once.
+void write_model_wire(const Model& model, WireWriter& wire);
+
+// Appends `model` to `out`.
 void append_model_wire(const Model& model, std::vector<std::uint8_t>& out);
 
 // The model written by append_model_wire; throws std::runtime_error for bytes it did not write.

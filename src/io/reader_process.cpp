@@ -2,6 +2,7 @@
 #include "io/reader_process.hpp"
 
 #include "io/model_wire.hpp"
+#include "io/shared_bytes.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -88,7 +89,8 @@ void write_all(int descriptor, const std::vector<std::uint8_t>& bytes) {
     }
 }
 
-[[noreturn]] void run_child(const std::function<Model()>& read, int out, std::uint64_t max_memory, double max_seconds) {
+[[noreturn]] void run_child(const std::function<Model()>& read, int out, const SharedBytes& shared,
+                            std::uint64_t max_memory, double max_seconds) {
     ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // never outlives the process waiting for it
     const rlimit no_core{0, 0}, no_files{0, 0};
     ::setrlimit(RLIMIT_CORE, &no_core);
@@ -108,9 +110,14 @@ void write_all(int descriptor, const std::vector<std::uint8_t>& bytes) {
     std::vector<std::uint8_t> message(sizeof(std::uint64_t));  // its length goes first
     try {
         Model model = read();
-        message.reserve(sizeof(std::uint64_t) + 1 + model_wire_size(model));
+        // The model goes into the shared memory, within this process's address space as a message would.
+        const std::size_t size = model_wire_bytes(model);
+        if (size > max_memory) throw std::bad_alloc();
+        const SharedMapping into = SharedMapping::for_writing(shared, size);
+        WireWriter wire(into.bytes());
+        write_model_wire(model, wire);
         message.push_back(static_cast<std::uint8_t>(Outcome::model));
-        append_model_wire(model, message);
+        WireWriter(message).value(static_cast<std::uint64_t>(size));
     } catch (const std::bad_alloc&) {
         message.assign(sizeof(std::uint64_t) + 1, static_cast<std::uint8_t>(Outcome::out_of_memory));
     } catch (const std::exception& problem) {
@@ -146,6 +153,12 @@ std::string signal_name(int signal) {
 ChildOutcome run_reader_child(const std::function<Model()>& read, const ReaderLimits& limits) {
     const auto [max_memory, max_seconds] = limits_in_force(limits);
     ChildOutcome outcome;
+    try {
+        outcome.shared = SharedBytes::create(max_memory);  // what is not written takes no memory
+    } catch (const std::runtime_error& problem) {
+        outcome.start_error = problem.what();
+        return outcome;
+    }
     int pipe_ends[2];
     if (::pipe2(pipe_ends, O_CLOEXEC) != 0) {
         outcome.start_error = std::strerror(errno);
@@ -160,11 +173,10 @@ ChildOutcome run_reader_child(const std::function<Model()>& read, const ReaderLi
     }
     if (child == 0) {
         ::close(pipe_ends[0]);
-        run_child(read, pipe_ends[1], max_memory, max_seconds);
+        run_child(read, pipe_ends[1], outcome.shared, max_memory, max_seconds);
     }
     ::close(pipe_ends[1]);
-    ::fcntl(pipe_ends[0], F_SETPIPE_SZ, 1 << 20);  // fewer trips for a large model; the default where refused
-    // The length comes first, so the model lands in one buffer of its own size.
+    // The length comes first, so the message lands in one buffer of its own size.
     std::vector<std::uint8_t>& received = outcome.message;
     received.resize(sizeof(std::uint64_t));
     std::size_t got = 0;
@@ -242,8 +254,14 @@ Model model_from_outcome(const ChildOutcome& outcome, const std::string& name, c
     if (kind != Outcome::model)
         throw std::runtime_error(name + ": the " + reader + " reader sent nothing raster understands");
     try {
-        return model_from_wire(rest);
+        // The message says how many bytes of the shared memory hold the model.
+        if (rest.size() != sizeof(std::uint64_t)) WireReader::broken();
+        const auto size = WireReader(rest).value<std::uint64_t>();
+        if (size > max_memory) throw std::runtime_error(memory_refusal);
+        const SharedMapping model = SharedMapping::for_reading(outcome.shared, static_cast<std::size_t>(size));
+        return model_from_wire(model.bytes());
     } catch (const std::runtime_error& problem) {
+        if (problem.what() == memory_refusal) throw;
         throw std::runtime_error(name + ": " + problem.what());
     }
 }

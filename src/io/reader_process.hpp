@@ -3,6 +3,8 @@
 #include <raster/io/model.hpp>
 #include <raster/io/reader_limits.hpp>
 
+#include "io/shared_bytes.hpp"
+
 #include <functional>
 #include <string>
 #include <vector>
@@ -12,13 +14,14 @@
 namespace raster::detail {
 
 // Runs `read` in a forked child with its address space, processor time and file writes
-// limited, and takes its model back through a pipe; in this process when the limits say so.
+// limited, and takes its model back through shared memory; in this process when the limits say so.
 // Throws std::runtime_error with one line naming `name` when the child crashed ("the
 // `reader` reader crashed"), ran out of memory or time, or `read` threw.
 // What a reader child left: its message (length first stripped), how it ended, and whether
 // the waiting side stopped it for time or for the size of what it sent.
 struct ChildOutcome {
-    std::vector<std::uint8_t> message;
+    std::vector<std::uint8_t> message;  // a model's says how many bytes of `shared` hold it
+    SharedBytes shared;
     int status = 0;  // as waitpid gives it
     double processor_seconds = 0.0;
     bool timed_out = false;

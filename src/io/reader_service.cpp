@@ -2,6 +2,7 @@
 
 #include "io/model_reading.hpp"
 #include "io/reader_process.hpp"
+#include "io/shared_bytes.hpp"
 #include "io/wire_bytes.hpp"
 
 #include <raster/io/input_file.hpp>
@@ -17,32 +18,80 @@
 #include <poll.h>
 #include <sys/prctl.h>
 #include <sys/socket.h>
+#include <sys/uio.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 namespace raster {
 namespace {
 
-// One message: its length, then its pieces as they are, none copied into another.
-bool send_all(int socket, std::initializer_list<std::span<const std::uint8_t>> pieces) {
-    std::uint64_t length = 0;
-    for (const auto& piece : pieces) length += piece.size();
-    const std::span<const std::uint8_t> framing(reinterpret_cast<const std::uint8_t*>(&length), sizeof length);
-    std::vector<std::span<const std::uint8_t>> all{framing};
-    all.insert(all.end(), pieces.begin(), pieces.end());
-    for (std::span<const std::uint8_t> piece : all) {
-        while (!piece.empty()) {
-            const ::ssize_t n = ::send(socket, piece.data(), piece.size(), MSG_NOSIGNAL);
-            if (n < 0 && errno == EINTR) continue;
-            if (n <= 0) return false;
-            piece = piece.subspan(static_cast<std::size_t>(n));
+// Sends `bytes`, with `descriptor` (unless -1) riding on the first of them.
+bool send_bytes(int socket, std::span<const std::uint8_t> bytes, int descriptor) {
+    while (!bytes.empty()) {
+        iovec piece{const_cast<std::uint8_t*>(bytes.data()), bytes.size()};
+        msghdr message{};
+        message.msg_iov = &piece;
+        message.msg_iovlen = 1;
+        alignas(cmsghdr) char control[CMSG_SPACE(sizeof(int))] = {};
+        if (descriptor >= 0) {
+            message.msg_control = control;
+            message.msg_controllen = sizeof control;
+            cmsghdr* passed = CMSG_FIRSTHDR(&message);
+            passed->cmsg_level = SOL_SOCKET;
+            passed->cmsg_type = SCM_RIGHTS;
+            passed->cmsg_len = CMSG_LEN(sizeof(int));
+            std::memcpy(CMSG_DATA(passed), &descriptor, sizeof descriptor);
         }
+        const ::ssize_t n = ::sendmsg(socket, &message, MSG_NOSIGNAL);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) return false;
+        descriptor = -1;  // it went with the first byte
+        bytes = bytes.subspan(static_cast<std::size_t>(n));
     }
     return true;
 }
 
+// One message: its length, then its pieces as they are, none copied into another; `descriptor`
+// (the model's shared memory, unless -1) goes along.
+bool send_all(int socket, std::initializer_list<std::span<const std::uint8_t>> pieces, int descriptor = -1) {
+    std::uint64_t length = 0;
+    for (const auto& piece : pieces) length += piece.size();
+    if (!send_bytes(socket, {reinterpret_cast<const std::uint8_t*>(&length), sizeof length}, descriptor)) return false;
+    for (std::span<const std::uint8_t> piece : pieces) {
+        if (!send_bytes(socket, piece, -1)) return false;
+    }
+    return true;
+}
+
+// Receives up to `size` bytes; a descriptor that came along is kept in `shared` (a second one is closed).
+::ssize_t receive_some(int socket, std::uint8_t* into, std::size_t size, detail::SharedBytes& shared) {
+    iovec piece{into, size};
+    msghdr message{};
+    message.msg_iov = &piece;
+    message.msg_iovlen = 1;
+    alignas(cmsghdr) char control[CMSG_SPACE(sizeof(int))] = {};
+    message.msg_control = control;
+    message.msg_controllen = sizeof control;
+    const ::ssize_t n = ::recvmsg(socket, &message, MSG_CMSG_CLOEXEC);
+    for (cmsghdr* passed = n > 0 ? CMSG_FIRSTHDR(&message) : nullptr; passed != nullptr;
+         passed = CMSG_NXTHDR(&message, passed)) {
+        if (passed->cmsg_level != SOL_SOCKET || passed->cmsg_type != SCM_RIGHTS) continue;
+        const std::size_t count = (passed->cmsg_len - CMSG_LEN(0)) / sizeof(int);
+        for (std::size_t i = 0; i < count; ++i) {
+            int descriptor = -1;
+            std::memcpy(&descriptor, CMSG_DATA(passed) + i * sizeof(int), sizeof descriptor);
+            if (shared.descriptor() < 0) {
+                shared = detail::SharedBytes(descriptor);
+            } else {
+                ::close(descriptor);
+            }
+        }
+    }
+    return n;
+}
+
 // One whole message, or false at the end of the stream or after `timeout_ms` (-1: none).
-bool receive(int socket, std::vector<std::uint8_t>& message, int timeout_ms) {
+bool receive(int socket, std::vector<std::uint8_t>& message, int timeout_ms, detail::SharedBytes& shared) {
     std::uint64_t length = 0;
     std::size_t got = 0;
     const auto fill = [&](std::uint8_t* into, std::size_t size) {
@@ -51,7 +100,7 @@ bool receive(int socket, std::vector<std::uint8_t>& message, int timeout_ms) {
             const int polled = ::poll(&ready, 1, timeout_ms);
             if (polled < 0 && errno == EINTR) continue;
             if (polled <= 0) return false;
-            const ::ssize_t n = ::recv(socket, into + got, size - got, 0);
+            const ::ssize_t n = receive_some(socket, into + got, size - got, shared);
             if (n < 0 && errno == EINTR) continue;
             if (n <= 0) return false;
             got += static_cast<std::size_t>(n);
@@ -67,7 +116,8 @@ bool receive(int socket, std::vector<std::uint8_t>& message, int timeout_ms) {
 [[noreturn]] void serve(int socket) {
     ::prctl(PR_SET_PDEATHSIG, SIGKILL);
     std::vector<std::uint8_t> request;
-    while (receive(socket, request, -1)) {
+    detail::SharedBytes none;  // a request brings no descriptor
+    while (receive(socket, request, -1, none)) {
         detail::ChildOutcome outcome;
         try {
             detail::WireReader in(request);
@@ -91,7 +141,7 @@ bool receive(int socket, std::vector<std::uint8_t>& message, int timeout_ms) {
         out.value(static_cast<std::uint8_t>(outcome.timed_out));
         out.value(static_cast<std::uint8_t>(outcome.too_large));
         out.text(outcome.start_error);
-        if (!send_all(socket, {ending, outcome.message})) break;
+        if (!send_all(socket, {ending, outcome.message}, outcome.shared.descriptor())) break;
     }
     ::_exit(0);
 }
@@ -139,15 +189,15 @@ Model ReaderService::read(const std::filesystem::path& path, const ObjOptions& o
     out.value(options.limits.max_memory);
     out.value(options.limits.max_seconds);
     std::vector<std::uint8_t> answer;
+    detail::ChildOutcome outcome;
     {
         const std::lock_guard<std::mutex> mine(turn_);
         // The service enforces the limits; a minute more here only guards against its own end.
         const int patience_ms = static_cast<int>(std::min(options.limits.max_seconds + 60.0, 2.0e6) * 1000.0);
-        if (!send_all(socket_, {request}) || !receive(socket_, answer, patience_ms)) {
+        if (!send_all(socket_, {request}) || !receive(socket_, answer, patience_ms, outcome.shared)) {
             throw std::runtime_error(name + ": the model reader service has stopped");
         }
     }
-    detail::ChildOutcome outcome;
     detail::WireReader in(answer);
     outcome.status = in.value<int>();
     outcome.processor_seconds = in.value<double>();

@@ -1,7 +1,9 @@
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <iterator>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -12,10 +14,13 @@
 // requests): the same program on both ends, so no byte order or padding is negotiated.
 namespace raster::detail {
 
-// Appends values, arrays and text to a byte vector, each array and text its length first.
+// Writes values, arrays and text, each array and text its length first: appended to a byte
+// vector, into a span sized beforehand, or only counted, so that the span's size is exact.
 class WireWriter {
 public:
-    explicit WireWriter(std::vector<std::uint8_t>& out) : out_(out) {}
+    WireWriter() = default;  // counts
+    explicit WireWriter(std::vector<std::uint8_t>& out) : grow_(&out) {}
+    explicit WireWriter(std::span<std::uint8_t> into) : into_(into) {}
 
     template <typename T>
     void value(const T& v) {
@@ -36,13 +41,61 @@ public:
         value(static_cast<std::uint64_t>(s.size()));
         bytes(s.data(), s.size());
     }
+    // The bytes written or counted so far.
+    [[nodiscard]] std::size_t size() const noexcept { return size_; }
 
 private:
     void bytes(const void* data, std::size_t size) {
         const auto* first = static_cast<const std::uint8_t*>(data);
-        if (size > 0) out_.insert(out_.end(), first, first + size);
+        if (grow_ != nullptr && size > 0) grow_->insert(grow_->end(), first, first + size);
+        if (into_.data() != nullptr && size > 0) {
+            if (size > into_.size() - size_) throw std::length_error("the wire's bytes were counted short");
+            std::memcpy(into_.data() + size_, first, size);
+        }
+        size_ += size;
     }
-    std::vector<std::uint8_t>& out_;
+    std::vector<std::uint8_t>* grow_ = nullptr;
+    std::span<std::uint8_t> into_;
+    std::size_t size_ = 0;
+};
+
+// Walks bytes as values of T, copied out one by one: a vector built from a pair of them is
+// allocated once and written once, neither zeroed first nor read through a misaligned pointer.
+template <typename T>
+class BytesAs {
+public:
+    using iterator_category = std::random_access_iterator_tag;
+    using value_type = T;
+    using difference_type = std::ptrdiff_t;
+    using pointer = const T*;
+    using reference = T;
+
+    explicit BytesAs(const std::uint8_t* at) : at_(at) {}
+    T operator*() const noexcept {
+        T v;
+        std::memcpy(&v, at_, sizeof v);
+        return v;
+    }
+    BytesAs& operator++() noexcept {
+        at_ += sizeof(T);
+        return *this;
+    }
+    BytesAs operator++(int) noexcept {
+        BytesAs was = *this;
+        at_ += sizeof(T);
+        return was;
+    }
+    BytesAs& operator+=(difference_type n) noexcept {
+        at_ += n * static_cast<difference_type>(sizeof(T));
+        return *this;
+    }
+    friend difference_type operator-(BytesAs a, BytesAs b) noexcept {
+        return (a.at_ - b.at_) / static_cast<difference_type>(sizeof(T));
+    }
+    friend bool operator==(BytesAs a, BytesAs b) noexcept { return a.at_ == b.at_; }
+
+private:
+    const std::uint8_t* at_;
 };
 
 // Reads them back in the same order, every length checked against the bytes that remain.
@@ -61,9 +114,8 @@ public:
     std::vector<T> array() {
         const auto count = value<std::uint64_t>();
         if (count > rest_.size() / sizeof(T)) broken();
-        std::vector<T> items(static_cast<std::size_t>(count));
-        if (count > 0) std::memcpy(items.data(), take(items.size() * sizeof(T)).data(), items.size() * sizeof(T));
-        return items;
+        const std::uint8_t* first = take(static_cast<std::size_t>(count) * sizeof(T)).data();
+        return std::vector<T>(BytesAs<T>(first), BytesAs<T>(first + count * sizeof(T)));
     }
     std::string text() {
         const auto count = value<std::uint64_t>();

@@ -45,22 +45,23 @@ std::string shown(double value) {
     return text;
 }
 
-// The part's mesh, with tangents made from its texture coordinates where its normal map needs
-// them and the file gave none, for the whole part or for some vertices (doc/conventions.md#normal-maps).
-Mesh with_tangents(const ModelPart& part) {
-    Mesh mesh = part.mesh;
-    if (!part.metallic_roughness || !part.metallic_roughness->normal_map) return mesh;
-    if (mesh.tangents.size() != mesh.positions.size()) {
-        mesh.tangents = tangents_from_uvs(mesh);
-        return mesh;
-    }
-    const auto none = [](const glm::vec4& t) { return glm::vec3(t) == glm::vec3(0.0F); };
-    if (std::none_of(mesh.tangents.begin(), mesh.tangents.end(), none)) return mesh;
+// The mesh the stage draws for the part, copied once (a model of millions of points is large),
+// with tangents made from its texture coordinates where its normal map needs them and the file
+// gave none, for the whole part or for some vertices (doc/conventions.md#normal-maps).
+Mesh staged_mesh(const ModelPart& part, bool both) {
+    const auto lacks = [](const glm::vec4& t) { return glm::vec3(t) == glm::vec3(0.0F); };
+    const Mesh& given = part.mesh;
+    const bool whole = given.tangents.size() == given.positions.size();
+    if (!part.metallic_roughness || !part.metallic_roughness->normal_map ||
+        (whole && std::none_of(given.tangents.begin(), given.tangents.end(), lacks)))
+        return both ? both_sides(given) : given;
+    Mesh mesh = given;
     const std::vector<glm::vec4> made = tangents_from_uvs(mesh);
-    for (std::size_t i = 0; i < made.size(); ++i) {
-        if (none(mesh.tangents[i])) mesh.tangents[i] = made[i];
+    if (!whole) mesh.tangents = made;
+    for (std::size_t i = 0; whole && i < made.size(); ++i) {
+        if (lacks(mesh.tangents[i])) mesh.tangents[i] = made[i];
     }
-    return mesh;
+    return both ? both_sides(mesh) : mesh;
 }
 
 // The lens limits of PerspectiveCamera, in unit-sphere distances.
@@ -91,7 +92,7 @@ ModelStage::ModelStage(std::shared_ptr<const Model> model, const ModelView& view
     for (std::size_t i = 0; i < model_->parts.size(); ++i) {
         const ModelPart& part = model_->parts[i];
         const bool both = view.cull == Culling::none || (view.cull == Culling::automatic && open[i]);
-        auto mesh = std::make_shared<Mesh>(both ? both_sides(with_tangents(part)) : with_tangents(part));
+        auto mesh = std::make_shared<Mesh>(staged_mesh(part, both));
         for (glm::vec3& p : mesh->positions) p = glm::vec3(unit_from_world(glm::dvec3(p)));
         meshes_.push_back(std::move(mesh));
     }
