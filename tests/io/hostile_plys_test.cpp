@@ -2,6 +2,7 @@
 // one line naming the line or byte, or keeps what is there with a warning; nothing is allocated
 // by a claim alone (doc/conventions.md#ply-reader).
 #include <raster/io/model.hpp>
+#include <raster/io/model_file.hpp>
 #include <raster/io/ply_file.hpp>
 
 #include "support/ply_files.hpp"
@@ -89,21 +90,30 @@ TEST(HostilePlys, IndicesOutOfRangeAreRefusedNamingTheFaceAndItsLineOrByte) {
     }
 }
 
-TEST(HostilePlys, DataCutShortMidRecordOrMidNumberKeepsTheWholeVerticesWithAWarning) {
-    const std::string binary = test_support::ply_text(triangle("binary_little_endian"));
-    const std::string cut = binary.substr(0, binary.find("end_header\n") + 11 + 12 * 2 + 5);  // 2.5 vertices
-    const Model model = raster::parse_ply(bytes_of(cut));
-    ASSERT_EQ(model.parts.size(), 1U);
-    EXPECT_EQ(model.parts[0].mesh.points.size(), 2U);
-    EXPECT_EQ(model.warnings, std::vector<std::string>{"<memory>: the PLY data is cut short: its header declares 3 "
-                                                       "'vertex' elements and the data ends in element 3; drawing "
+TEST(HostilePlys, DataCutShortMidRecordOrMidNumberKeepsTheWholeElementsWithAWarning) {
+    PlySpec spec = triangle("binary_little_endian");
+    spec.vertices.push_back({1, 1, 0});
+    spec.faces = {{0, 1, 2}, {1, 3, 2}};
+    const std::string binary = test_support::ply_text(spec);
+    const Model model = raster::parse_ply(bytes_of(binary.substr(0, binary.size() - 13)));  // a face short
+    EXPECT_EQ(raster::triangle_count(model), 1U);
+    EXPECT_EQ(model.warnings, std::vector<std::string>{"<memory>: the PLY data is cut short: its header declares 2 "
+                                                       "'face' elements and the data ends in element 2; drawing "
                                                        "what is there"});
-    const std::string ascii = test_support::ply_text(triangle("ascii"));
-    const std::string cut_text = ascii.substr(0, ascii.find("0 1 0 "));
-    const Model text_model = raster::parse_ply(bytes_of(cut_text + "0 1"));  // mid-record, no line end
-    EXPECT_EQ(text_model.parts.at(0).mesh.points.size(), 2U);
-    EXPECT_EQ(text_model.warnings.size(), 1U);
-    EXPECT_EQ(raster::parse_ply(bytes_of(cut_text + "0 1.5e")).parts.at(0).mesh.points.size(), 2U);  // mid-number
+    // A list cut short, and vertices of one size cut short, run past the end, as ply_counts said.
+    EXPECT_EQ(error_of(binary.substr(0, binary.size() - 5)),
+              "<memory>: 'face' item 2 has a list of 3 entries, more than the bytes left can hold");
+    EXPECT_NE(error_of(binary.substr(0, body_at(binary) + 29)).find("more than the 29 bytes left can hold"),
+              std::string::npos);
+    const std::string ascii = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                              "property float z\nend_header\n0.5 0.5 0.5\n1.5 0.5 0.5\n";
+    const Model record = raster::parse_ply(bytes_of(ascii + "0.25 1.25"));  // mid-record, no line end
+    EXPECT_EQ(raster::point_count(record), 2U);
+    EXPECT_EQ(record.warnings, std::vector<std::string>{"<memory>: the PLY data is cut short: its header declares 3 "
+                                                        "'vertex' elements and the data ends in element 3; drawing "
+                                                        "what is there"});
+    EXPECT_EQ(raster::point_count(raster::parse_ply(bytes_of(ascii + "0.25 1.25 0.1e"))), 2U);   // mid-number
+    EXPECT_EQ(raster::point_count(raster::parse_ply(bytes_of(ascii + "0.25 1.25 0.125"))), 3U);  // no line end
 }
 
 TEST(HostilePlys, NonFiniteCoordinatesAreSkippedInACloudAndRefusedInAFace) {
@@ -130,9 +140,9 @@ TEST(HostilePlys, WordsThatAreNotNumbersAndUnknownTypesAreRefusedNamingTheLine) 
     EXPECT_EQ(error_of("ply\nformat ascii 1.0\nelement vertex 1\nproperty float16 x\nend_header\n0\n"),
               "<memory>: the PLY header has a property line that is not 'property TYPE NAME' or 'property list TYPE "
               "TYPE NAME' (line 4)");
-    EXPECT_EQ(
-        error_of("ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\nend_header\n1 2\n3\n"),
-        "<memory>:8: 'vertex' item 2 has fewer values than its 2 properties");
+    EXPECT_EQ(error_of("ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\nend_header\n"
+                       "10.5 20.5\n30.5\n"),
+              "<memory>:8: 'vertex' item 2 has fewer values than its 2 properties");
 }
 
 TEST(HostilePlys, AFaceWithNoCornersOrTooManyIsRefused) {
