@@ -12,8 +12,8 @@ usage: tools/bootstrap.sh COMMAND
   test               build in Release and run every test
   sanitize           build with AddressSanitizer and UndefinedBehaviorSanitizer and run every test
   fuzz [SECONDS]     build the libFuzzer targets with clang; fuzz fill and line, the mesh
-                     pipeline, OBJ and texture loading for SECONDS each (default 60), then
-                     replay the glTF/STL/PLY target's seeds
+                     pipeline, OBJ and texture loading and raster's PLY reader for SECONDS
+                     each (default 60), then replay the glTF/STL/PLY target's seeds
   lab                measure every raster method and redraw the charts in doc/lab/
   cluster [DIR]      install Slurm and munge and start a one-node cluster on 127.0.0.1 with its
                      state in DIR (default /tmp/raster-slurm); prints the SLURM_CONF line to export,
@@ -84,7 +84,7 @@ fuzz)
     seconds="${2:-60}"
     install_missing "${base_packages[@]}" clang libclang-rt-14-dev
     build fuzz
-    for target in fuzz_raster fuzz_mesh fuzz_model fuzz_scene; do
+    for target in fuzz_raster fuzz_mesh fuzz_model fuzz_ply fuzz_scene; do
         mkdir -p "build/fuzz/corpus/$target"
         # New finds go to the first folder; the committed seeds (lab/seeds/) are read, never written.
         seeds=()

@@ -57,6 +57,7 @@
 #include <raster/io/model_file.hpp>
 #include <raster/io/obj_file.hpp>
 #include <raster/io/output_file.hpp>
+#include <raster/io/ply_file.hpp>
 #include <raster/io/png.hpp>
 #include <raster/io/reader_limits.hpp>
 #include <raster/io/reader_service.hpp>

@@ -6,6 +6,7 @@
 #include "io/reader_process.hpp"
 
 #include <raster/io/input_file.hpp>
+#include <raster/io/ply_file.hpp>
 #include <raster/io/reader_service.hpp>
 
 #include <stdexcept>
@@ -36,7 +37,10 @@ Model read_model_here(const std::filesystem::path& path, const ObjOptions& optio
     }
     if (const std::string problem = content_problem(format, head, size, path); !problem.empty())
         throw std::runtime_error(name + ": " + problem);
-    return format == ModelFormat::obj ? read_obj(path, options) : read_scene_file(path, options);
+    if (format == ModelFormat::obj) return read_obj(path, options);
+    if (format == ModelFormat::ply)
+        return read_ply(path, options);  // raster's own reader (doc/conventions.md#ply-reader)
+    return read_scene_file(path, options);
 }
 
 }  // namespace detail

@@ -24,7 +24,7 @@ namespace raster {
 [[nodiscard]] Model parse_scene_file(std::span<const std::uint8_t> bytes, const std::string& format,
                                      const ObjOptions& options = {});
 
-// read_obj for .obj (any letter case), read_scene_file for .gltf, .glb, .stl, .ply and the
+// read_obj for .obj (any letter case), read_ply for .ply, read_scene_file for .gltf, .glb, .stl and the
 // further formats of model_endings(); a format raster knows but does not read is refused saying
 // why, any other ending with the list of those it reads, and a file whose first bytes are
 // another format's saying what it looks like (doc/conventions.md#model-formats). The reader runs in a child process

@@ -1,0 +1,87 @@
+#pragma once
+
+#include <raster/image/colour.hpp>
+
+#include "io/ply/ply_body.hpp"
+#include "io/ply/ply_layout.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <string_view>
+
+// Which of a vertex element's properties raster reads, by the names assimp's PLY reader gives
+// meaning to, and one vertex's values turned into raster's (doc/conventions.md#ply-reader).
+namespace raster::detail {
+
+class VertexSlots {
+public:
+    enum Slot : std::size_t { x, y, z, nx, ny, nz, red, green, blue, alpha, u, v, count };
+
+    VertexSlots() = default;
+    // `keep_places`: a vertex whose position is not finite stays, as NaN, so that faces count right.
+    VertexSlots(const PlyElement& element, bool keep_places);
+
+    // Whether any property is one raster reads (assimp reads no vertex of an element without one).
+    [[nodiscard]] bool readable() const noexcept { return any(x, count); }
+    void reserve(PlyBody& body, std::uint64_t vertices) const;
+
+    // Appends the vertex whose property p has the value value_of(p) to `body`.
+    template <typename ValueOf>
+    void keep(const ValueOf& value_of, PlyBody& body) const {
+        const auto read = [&](Slot s) { return at_[s] == kNone ? 0.0F : static_cast<float>(value_of(at_[s])); };
+        const float px = read(x), py = read(y), pz = read(z);
+        if (!std::isfinite(px) || !std::isfinite(py) || !std::isfinite(pz)) {
+            ++body.non_finite;
+            if (!keep_places_) return;
+            body.positions.emplace_back(std::numeric_limits<float>::quiet_NaN());
+            if (normals_) body.normals.emplace_back(0.0F);
+            if (uvs_) body.uvs.emplace_back(0.0F);
+            if (colours_) body.colours.push_back({1.0F, 1.0F, 1.0F});
+            return;
+        }
+        body.positions.emplace_back(px, py, -pz);
+        if (normals_) {
+            const float a = read(nx), b = read(ny), c = read(nz);
+            const bool finite = std::isfinite(a) && std::isfinite(b) && std::isfinite(c);
+            const glm::vec3 n = finite ? glm::vec3(a, b, -c) : glm::vec3(0.0F);
+            // A cloud's points keep the file's normal made unit; faces' corners are made so later.
+            body.normals.push_back(keep_places_ ? n : unit_or_zero(n));
+        }
+        if (uvs_) {
+            const float s = read(u), t = read(v);
+            body.uvs.emplace_back(std::isfinite(s) ? s : 0.0F, std::isfinite(t) ? t : 0.0F);
+        }
+        if (colours_)
+            body.colours.push_back({channel(red, value_of), channel(green, value_of), channel(blue, value_of)});
+    }
+
+private:
+    static constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+
+    [[nodiscard]] bool any(Slot from, Slot to) const noexcept {
+        return std::any_of(at_.begin() + from, at_.begin() + to, [](std::size_t p) { return p != kNone; });
+    }
+
+    // A colour channel in [0, 1] as assimp scales each type (doc/conventions.md#vertex-colours),
+    // then decoded from sRGB: bytes through the table, as the formula gives them.
+    template <typename ValueOf>
+    float channel(Slot s, const ValueOf& value_of) const {
+        const float written = at_[s] == kNone ? 0.0F : scaled(value_of(at_[s]), types_[s]);
+        const float c = std::isfinite(written) ? std::clamp(written, 0.0F, 1.0F) : 1.0F;
+        const auto b = static_cast<std::size_t>(c * 255.0F + 0.5F);
+        if (static_cast<float>(b) / 255.0F == c) return linear_bytes_[b];
+        return static_cast<float>(linear_from_srgb_channel(c));
+    }
+    [[nodiscard]] static float scaled(double value, PlyType type) noexcept;
+
+    std::array<std::size_t, count> at_{kNone, kNone, kNone, kNone, kNone, kNone,
+                                       kNone, kNone, kNone, kNone, kNone, kNone};
+    std::array<PlyType, count> types_{};
+    bool keep_places_ = false, normals_ = false, uvs_ = false, colours_ = false;
+    std::array<float, 256> linear_bytes_{};
+};
+
+}  // namespace raster::detail
