@@ -42,9 +42,12 @@ const Thresholds& thresholds() noexcept {
 std::uint8_t encode(float v, const Thresholds& table) noexcept {
     if (!(v > 0.0F)) return 0;  // negative, zero or NaN
     if (v >= 1.0F) return 255;
-    // The bucket gives the byte of its lower end; at most a step or two of the exact thresholds
-    // finishes the job, so every float gets exactly the byte its thresholds say.
+    // The bucket gives the byte of its lower end; the exact thresholds finish the job, so every
+    // float gets exactly the byte its thresholds say. One step suffices for every float below 1
+    // (checked over all of them): taken without a branch, which colours in no order (a point
+    // cloud's) would mispredict; the loop after it never runs, so it is always predicted.
     std::size_t b = table.start[static_cast<std::size_t>(v * Thresholds::kBuckets)];
+    b += table.at[b + 1] <= v ? 1U : 0U;
     while (table.at[b + 1] <= v) ++b;
     return static_cast<std::uint8_t>(b);
 }

@@ -29,14 +29,13 @@ public:
         }
     }
 
-    // A vertex in the world (posed_corner), with its colour as tint.
+    // A vertex in the world (posed_corner: its normal already unit or zero), with its colour as tint.
     [[nodiscard]] LinearRgb linear(const Corner& vertex) const noexcept {
-        if (unit_or_zero(vertex.normal) == glm::vec3(0.0F))
-            return base_ * vertex.colour;  // no normal: nothing to light
+        if (vertex.normal == glm::vec3(0.0F)) return base_ * vertex.colour;  // no normal: nothing to light
         return linear_from_srgb(lit(vertex));
     }
     [[nodiscard]] Rgb srgb(const Corner& vertex) const noexcept {
-        if (unit_or_zero(vertex.normal) == glm::vec3(0.0F)) return srgb_from_linear(base_ * vertex.colour);
+        if (vertex.normal == glm::vec3(0.0F)) return srgb_from_linear(base_ * vertex.colour);
         return lit(vertex);
     }
 
