@@ -75,6 +75,7 @@ Mesh both_sides(const Mesh& mesh) {
     for (const glm::vec3& n : mesh.normals) doubled.normals.push_back(-n);
     if (!mesh.uvs.empty()) doubled.uvs.insert(doubled.uvs.end(), mesh.uvs.begin(), mesh.uvs.end());
     if (!mesh.colours.empty()) doubled.colours.insert(doubled.colours.end(), mesh.colours.begin(), mesh.colours.end());
+    if (!mesh.alphas.empty()) doubled.alphas.insert(doubled.alphas.end(), mesh.alphas.begin(), mesh.alphas.end());
     // The back's whole tangent frame turns round (w too, as n x t does not), as glTF's double-sided back faces.
     for (const glm::vec4& t : mesh.tangents) doubled.tangents.push_back(-t);
     for (const Facet& facet : mesh.facets) {

@@ -16,7 +16,7 @@
 namespace raster::detail {
 namespace {
 
-constexpr std::uint32_t kWireMark = 0x52574d32;  // "RWM2": parts carry their Phong maps
+constexpr std::uint32_t kWireMark = 0x52574d33;  // "RWM3": meshes carry their vertex alphas
 
 void write_mesh(WireWriter& out, const Mesh& mesh) {
     out.array(mesh.positions);
@@ -26,6 +26,7 @@ void write_mesh(WireWriter& out, const Mesh& mesh) {
     out.value(static_cast<std::uint8_t>(mesh.convex));
     out.array(mesh.uvs);
     out.array(mesh.colours);
+    out.array(mesh.alphas);
     out.array(mesh.points);
     out.array(mesh.segments);
     out.array(mesh.tangents);
@@ -42,13 +43,18 @@ Mesh read_mesh(WireReader& in) {
     mesh.convex = in.value<std::uint8_t>() != 0;
     mesh.uvs = in.array<glm::vec2>();
     mesh.colours = in.array<LinearRgb>();
+    mesh.alphas = in.array<float>();
     mesh.points = in.array<std::uint32_t>();
     mesh.segments = in.array<std::array<std::uint32_t, 2>>();
     mesh.tangents = in.array<glm::vec4>();
     const std::size_t n = mesh.positions.size();
     if ((!mesh.normals.empty() && mesh.normals.size() != n) || (!mesh.uvs.empty() && mesh.uvs.size() != n) ||
-        (!mesh.colours.empty() && mesh.colours.size() != n) || (!mesh.tangents.empty() && mesh.tangents.size() != n)) {
+        (!mesh.colours.empty() && mesh.colours.size() != n) || (!mesh.alphas.empty() && mesh.alphas.size() != n) ||
+        (!mesh.tangents.empty() && mesh.tangents.size() != n)) {
         WireReader::broken();
+    }
+    for (const float alpha : mesh.alphas) {
+        if (!(alpha >= 0.0F && alpha <= 1.0F)) WireReader::broken();  // the reader clamped them
     }
     for (const Facet& facet : mesh.facets) {
         for (const std::uint32_t corner : facet.corners) {
@@ -92,8 +98,8 @@ std::size_t model_wire_size(const Model& model) noexcept {
         size += 256 + part.material_name.size() + m.positions.size() * sizeof(glm::vec3) +
                 m.normals.size() * sizeof(glm::vec3) + m.facets.size() * sizeof(Facet) +
                 m.uvs.size() * sizeof(glm::vec2) + m.colours.size() * sizeof(LinearRgb) +
-                m.points.size() * sizeof(std::uint32_t) + m.segments.size() * sizeof(m.segments[0]) +
-                m.tangents.size() * sizeof(glm::vec4);
+                m.alphas.size() * sizeof(float) + m.points.size() * sizeof(std::uint32_t) +
+                m.segments.size() * sizeof(m.segments[0]) + m.tangents.size() * sizeof(glm::vec4);
         const auto count = [&](const std::shared_ptr<const Texture>& texture) {
             if (texture && counted.emplace(texture.get(), true).second)
                 size += 64 + texture->level(0).bytes().size() * 4 / 3 + 64 * texture->level_count() +
