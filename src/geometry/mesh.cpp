@@ -40,9 +40,10 @@ Mesh posed(const Mesh& mesh, const glm::mat4& model, PoseParts parts) {
 void append_posed(Mesh& whole, const Mesh& part, const glm::mat4& model) {
     const bool empty = whole.positions.empty();
     if (!empty && (whole.uvs.empty() != part.uvs.empty() || whole.colours.empty() != part.colours.empty() ||
-                   whole.tangents.empty() != part.tangents.empty() || whole.surface != part.surface)) {
+                   whole.alphas.empty() != part.alphas.empty() || whole.tangents.empty() != part.tangents.empty() ||
+                   whole.surface != part.surface)) {
         throw std::invalid_argument(
-            "append_posed: the parts differ in texture coordinates, colours, tangents or surface");
+            "append_posed: the parts differ in texture coordinates, colours, alphas, tangents or surface");
     }
     Mesh moved = posed(part, model);
     const auto offset = static_cast<std::uint32_t>(whole.positions.size());
@@ -54,6 +55,7 @@ void append_posed(Mesh& whole, const Mesh& part, const glm::mat4& model) {
     whole.facets.insert(whole.facets.end(), moved.facets.begin(), moved.facets.end());
     whole.uvs.insert(whole.uvs.end(), moved.uvs.begin(), moved.uvs.end());
     whole.colours.insert(whole.colours.end(), moved.colours.begin(), moved.colours.end());
+    whole.alphas.insert(whole.alphas.end(), moved.alphas.begin(), moved.alphas.end());
     whole.tangents.insert(whole.tangents.end(), moved.tangents.begin(), moved.tangents.end());
     whole.surface = part.surface;
     whole.convex = empty && part.convex;
@@ -71,6 +73,7 @@ Posing::Posing(const Mesh& mesh, const glm::mat4& model, PoseParts parts)
     result_.normals.resize(mesh.normals.size());  // zero where vertex normals are left out
     result_.uvs = mesh.uvs;
     result_.colours = mesh.colours;
+    result_.alphas = mesh.alphas;
     result_.tangents.resize(mesh.tangents.size());
     result_.facets.resize(mesh.facets.size());
 }

@@ -31,7 +31,7 @@ private:
 
 class Posing {
 public:
-    // Sizes the result; texture coordinates, colours, surface and convexity are copied at once.
+    // Sizes the result; texture coordinates, colours, alphas, surface and convexity are copied at once.
     Posing(const Mesh& mesh, const glm::mat4& model, PoseParts parts);
     void vertices(std::size_t begin, std::size_t end) noexcept;
     void facets(std::size_t begin, std::size_t end) noexcept;

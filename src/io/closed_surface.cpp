@@ -79,6 +79,7 @@ struct DoubledFields {
     bool convex;
     std::vector<glm::vec2> uvs;
     std::vector<LinearRgb> colours;
+    std::vector<float> alphas;
     std::vector<std::uint32_t> points;
     std::vector<std::array<std::uint32_t, 2>> segments;
     std::vector<glm::vec4> tangents;
@@ -139,6 +140,7 @@ Mesh both_sides(const Mesh& mesh) {
     doubled.normals = twice(mesh.normals);
     doubled.uvs = twice(mesh.uvs);
     doubled.colours = twice(mesh.colours);
+    doubled.alphas = twice(mesh.alphas);
     doubled.tangents = twice(mesh.tangents);
     doubled.facets = twice(mesh.facets);
     doubled.points = mesh.points;
@@ -148,6 +150,7 @@ Mesh both_sides(const Mesh& mesh) {
     for (const glm::vec3& n : mesh.normals) doubled.normals.push_back(-n);
     if (!mesh.uvs.empty()) doubled.uvs.insert(doubled.uvs.end(), mesh.uvs.begin(), mesh.uvs.end());
     if (!mesh.colours.empty()) doubled.colours.insert(doubled.colours.end(), mesh.colours.begin(), mesh.colours.end());
+    if (!mesh.alphas.empty()) doubled.alphas.insert(doubled.alphas.end(), mesh.alphas.begin(), mesh.alphas.end());
     // The back's whole tangent frame turns round (w too, as n x t does not), as glTF's double-sided back faces.
     for (const glm::vec4& t : mesh.tangents) doubled.tangents.push_back(-t);
     for (const Facet& facet : mesh.facets) {

@@ -1,5 +1,6 @@
 #include "io/model_builder.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <map>
@@ -62,6 +63,10 @@ void push_vertex(Mesh& mesh, const PolygonSoup& soup, const SoupCorner& corner, 
     if (with.colours) {
         mesh.colours.push_back(corner.colour != kNoIndex ? soup.colours[static_cast<std::size_t>(corner.colour)]
                                                          : LinearRgb{1.0F, 1.0F, 1.0F});
+        if (!soup.alphas.empty()) {
+            const auto at = static_cast<std::size_t>(corner.colour);
+            mesh.alphas.push_back(corner.colour != kNoIndex && at < soup.alphas.size() ? soup.alphas[at] : 1.0F);
+        }
     }
     if (with.tangents) {  // zero where a corner has none: the shader then falls back to the cotangent frame
         mesh.tangents.push_back(corner.tangent != kNoIndex ? soup.tangents[static_cast<std::size_t>(corner.tangent)]
@@ -184,7 +189,10 @@ std::vector<std::pair<int, Mesh>> meshes_by_material(const PolygonSoup& soup, do
         meshes[segment.material].segments.push_back({a, b});
     }
     std::vector<std::pair<int, Mesh>> result;
-    for (auto& [material, mesh] : meshes) result.emplace_back(material, std::move(mesh));
+    for (auto& [material, mesh] : meshes) {
+        if (std::all_of(mesh.alphas.begin(), mesh.alphas.end(), [](float a) { return a >= 1.0F; })) mesh.alphas = {};
+        result.emplace_back(material, std::move(mesh));
+    }
     return result;
 }
 

@@ -44,6 +44,8 @@ struct PolygonSoup {
     std::vector<glm::vec3> normals;
     std::vector<glm::vec2> uvs;
     std::vector<LinearRgb> colours;  // in linear light
+    // Empty, or each colour's alpha in [0, 1] by the same index (SoupCorner::colour); one missing reads as 1.
+    std::vector<float> alphas{};
     std::vector<glm::vec4> tangents{};
     std::vector<SoupTriangle> triangles;
     std::vector<SoupPoint> points{};
@@ -54,8 +56,8 @@ struct PolygonSoup {
 // its normal when there are as many normals as vertices, its colour when there are colours.
 void add_every_vertex_as_a_point(PolygonSoup& soup);
 
-// One mesh per material the triangles use, in order of material. Each corner without a usable normal
-// takes the area-weighted mean of the facet normals around its position that lie within
+// One mesh per material the triangles use, in order of material; a mesh whose vertex alphas are all 1 keeps none. Each
+// corner without a usable normal takes the area-weighted mean of the facet normals around its position that lie within
 // `crease_degrees` of its own facet's (0: every facet flat). Triangles with no area are dropped.
 // Points and segments keep the file's normal, or none (zero): they are drawn in their colour.
 [[nodiscard]] std::vector<std::pair<int, Mesh>> meshes_by_material(const PolygonSoup& soup, double crease_degrees);

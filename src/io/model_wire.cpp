@@ -17,7 +17,7 @@
 namespace raster::detail {
 namespace {
 
-constexpr std::uint32_t kWireMark = 0x52574d32;  // "RWM2": parts carry their Phong maps
+constexpr std::uint32_t kWireMark = 0x52574d33;  // "RWM3": meshes carry their vertex alphas
 
 void write_mesh(WireWriter& out, const Mesh& mesh) {
     out.array(mesh.positions);
@@ -27,6 +27,7 @@ void write_mesh(WireWriter& out, const Mesh& mesh) {
     out.value(static_cast<std::uint8_t>(mesh.convex));
     out.array(mesh.uvs);
     out.array(mesh.colours);
+    out.array(mesh.alphas);
     out.array(mesh.points);
     out.array(mesh.segments);
     out.array(mesh.tangents);
@@ -43,13 +44,18 @@ Mesh read_mesh(WireReader& in) {
     mesh.convex = in.value<std::uint8_t>() != 0;
     mesh.uvs = in.array<glm::vec2>();
     mesh.colours = in.array<LinearRgb>();
+    mesh.alphas = in.array<float>();
     mesh.points = in.array<std::uint32_t>();
     mesh.segments = in.array<std::array<std::uint32_t, 2>>();
     mesh.tangents = in.array<glm::vec4>();
     const std::size_t n = mesh.positions.size();
     if ((!mesh.normals.empty() && mesh.normals.size() != n) || (!mesh.uvs.empty() && mesh.uvs.size() != n) ||
-        (!mesh.colours.empty() && mesh.colours.size() != n) || (!mesh.tangents.empty() && mesh.tangents.size() != n)) {
+        (!mesh.colours.empty() && mesh.colours.size() != n) || (!mesh.alphas.empty() && mesh.alphas.size() != n) ||
+        (!mesh.tangents.empty() && mesh.tangents.size() != n)) {
         WireReader::broken();
+    }
+    for (const float alpha : mesh.alphas) {
+        if (!(alpha >= 0.0F && alpha <= 1.0F)) WireReader::broken();  // the reader clamped them
     }
     // The largest index of each kind against the positions: one branchless pass each, which vectorises.
     std::uint32_t top = 0;

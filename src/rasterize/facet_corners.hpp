@@ -39,6 +39,10 @@ inline void check_drawable(const Framebuffer& colour, const DepthBuffer* depth_b
         throw std::invalid_argument("mesh has " + std::to_string(mesh.colours.size()) + " colours for " +
                                     std::to_string(mesh.positions.size()) + " positions");
     }
+    if (!mesh.alphas.empty() && mesh.alphas.size() != mesh.positions.size()) {
+        throw std::invalid_argument("mesh has " + std::to_string(mesh.alphas.size()) + " alphas for " +
+                                    std::to_string(mesh.positions.size()) + " positions");
+    }
     if (!mesh.tangents.empty() && mesh.tangents.size() != mesh.positions.size()) {
         throw std::invalid_argument("mesh has " + std::to_string(mesh.tangents.size()) + " tangents for " +
                                     std::to_string(mesh.positions.size()) + " positions");
@@ -53,9 +57,12 @@ inline void check_drawable(const Framebuffer& colour, const DepthBuffer* depth_b
 // What the vertex stage sees of corner k of a facet, at `position` with `normal`.
 inline Corner corner_of(const Mesh& mesh, const Facet& facet, std::size_t k, glm::vec3 position, glm::vec3 normal) {
     const std::uint32_t i = facet.corners[k];
-    return {position, normal, mesh.uvs.empty() ? glm::vec2(0.0F) : mesh.uvs[i],
+    return {position,
+            normal,
+            mesh.uvs.empty() ? glm::vec2(0.0F) : mesh.uvs[i],
             mesh.colours.empty() ? LinearRgb{1.0F, 1.0F, 1.0F} : mesh.colours[i],
-            mesh.tangents.empty() ? glm::vec4(0.0F) : mesh.tangents[i]};
+            mesh.tangents.empty() ? glm::vec4(0.0F) : mesh.tangents[i],
+            mesh.alphas.empty() ? 1.0F : mesh.alphas[i]};
 }
 
 // The Varying of each corner of a facet, from the vertex stage's per-vertex results or, for
@@ -68,7 +75,7 @@ std::array<typename Shader::Varying, 3> facet_varyings(const Shader& shader, con
     if (Shader::kFacetNormal) {  // lit once per facet at its centroid; texture coordinates and colours stay each
                                  // corner's own
         const glm::vec3 centroid = at[0] / 3.0F + at[1] / 3.0F + at[2] / 3.0F;  // no overflow
-        if (mesh.uvs.empty() && mesh.colours.empty()) {
+        if (mesh.uvs.empty() && mesh.colours.empty() && mesh.alphas.empty()) {
             const auto shared = shader.vertex({centroid, facet.normal});
             return {shared, shared, shared};
         }
@@ -89,7 +96,8 @@ template <typename Shader>
 typename Shader::Varying vertex_varying(const Shader& shader, const Mesh& mesh, std::size_t i) {
     return shader.vertex({mesh.positions[i], mesh.normals[i], mesh.uvs.empty() ? glm::vec2(0.0F) : mesh.uvs[i],
                           mesh.colours.empty() ? LinearRgb{1.0F, 1.0F, 1.0F} : mesh.colours[i],
-                          mesh.tangents.empty() ? glm::vec4(0.0F) : mesh.tangents[i]});
+                          mesh.tangents.empty() ? glm::vec4(0.0F) : mesh.tangents[i],
+                          mesh.alphas.empty() ? 1.0F : mesh.alphas[i]});
 }
 
 // Whether a triangle's corners leave every pixel centre of a band of rows above or below them,

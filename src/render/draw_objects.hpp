@@ -46,12 +46,12 @@ struct Multisampling {
 };
 
 // How an object's alpha is drawn: not at all, blended, or masked sample by sample (a mask
-// without a texture alpha shows whole or not at all, and draws as an opaque object).
+// without a texture or vertex alpha shows whole or not at all, and draws as an opaque object).
 enum class AlphaKind { none, blend, mask };
 inline AlphaKind alpha_kind_of(const SceneObject& object) noexcept {
     if (blends(object.opacity)) return AlphaKind::blend;
-    const bool mapped = object.texture && object.texture->has_alpha();
-    return object.opacity.mode == AlphaMode::mask && mapped ? AlphaKind::mask : AlphaKind::none;
+    const bool varies = (object.texture && object.texture->has_alpha()) || takes_vertex_alpha(object);
+    return object.opacity.mode == AlphaMode::mask && varies ? AlphaKind::mask : AlphaKind::none;
 }
 
 template <detail::Interpolation kMode, typename Camera, typename FrontFor>
@@ -94,12 +94,13 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
         const auto* pbr = std::get_if<MetallicRoughness>(&object.material);
         const TextureTransform moved = pbr != nullptr ? pbr->base_colour_transform : TextureTransform{};
         const auto alpha_of = [&](const typename Shader::Varying& varying) {
-            if constexpr (requires { varying.uv; }) {
+            const auto& own = own_varying(varying);  // times the corners' alpha, where the shader carries it
+            float alpha = object.opacity.factor * vertex_alpha_of(varying);
+            if constexpr (requires { own.uv; }) {
                 if (alpha_map != nullptr)  // read where the base colour map is read
-                    return object.opacity.factor *
-                           alpha_map->alpha(moved_uv(moved, varying.uv, {}).uv, object.sampler.wrap);
+                    alpha *= alpha_map->alpha(moved_uv(moved, own.uv, {}).uv, object.sampler.wrap);
             }
-            return object.opacity.factor;
+            return alpha;
         };
         const PointTargets points_target{&framebuffer, tested, samples, depth_test, multisampling.offsets};
         if (object.mesh->facets.empty()) {  // points and lines alone: no posed copy, no front end

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <glm/ext/matrix_transform.hpp>
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -88,4 +89,19 @@ TEST(FacetNormal, DegenerateCornersHaveNoNormal) {
     EXPECT_EQ(raster::facet_normal({nan, 0, 0}, {0, 1, 0}, {1, 0, 0}), glm::vec3(0.0F));
     EXPECT_EQ(raster::unit_or_zero({0, 0, 0}), glm::vec3(0.0F));
     EXPECT_EQ(raster::unit_or_zero({0, 3, 4}), glm::vec3(0.0F, 0.6F, 0.8F));
+}
+
+// Alphas are carried as colours are: unmoved by posing, appended after the whole's, and a part
+// with them never joins one without (doc/conventions.md#vertex-alpha).
+TEST(PosedMesh, VertexAlphasArePosedAndAppendedAsColoursAre) {
+    raster::Mesh part = raster::cube_mesh();
+    part.alphas.assign(part.positions.size(), 0.5F);
+    const glm::mat4 moved = glm::translate(glm::mat4(1.0F), glm::vec3(2, 0, 0));
+    EXPECT_EQ(raster::posed(part, moved).alphas, part.alphas);
+    raster::Mesh whole;
+    raster::append_posed(whole, part, moved);
+    raster::append_posed(whole, part, glm::mat4(1.0F));
+    EXPECT_EQ(whole.alphas.size(), 2 * part.positions.size());
+    raster::Mesh opaque = raster::cube_mesh();
+    EXPECT_THROW(raster::append_posed(whole, opaque, glm::mat4(1.0F)), std::invalid_argument);
 }

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 #include <glm/geometric.hpp>
 
 using raster::Framebuffer;
@@ -118,4 +119,12 @@ TEST(OpenSurfaces, BothSidesTurnsTheBackCopysTangentFrameRound) {
         EXPECT_EQ(doubled.tangents[i + mesh.positions.size()], -mesh.tangents[i]);
         EXPECT_EQ(mapped(doubled, i + mesh.positions.size()), -mapped(mesh, i));
     }
+}
+
+// Both copies keep each vertex's alpha (doc/conventions.md#vertex-alpha).
+TEST(OpenSurfaces, BothSidesGivesTheBackCopyTheFrontsVertexAlphas) {
+    raster::Mesh mesh = raster::parse_obj(kTriangle, "").parts.at(0).mesh;
+    mesh.alphas = {0.25F, 0.5F, 0.75F};
+    const raster::Mesh doubled = raster::both_sides(mesh);
+    EXPECT_EQ(doubled.alphas, (std::vector<float>{0.25F, 0.5F, 0.75F, 0.25F, 0.5F, 0.75F}));
 }

@@ -26,9 +26,9 @@ namespace {
 const std::filesystem::path kTestModels = "/usr/share/assimp/models";
 const std::vector<std::string> kFormats{"ascii", "binary_little_endian", "binary_big_endian"};
 
-// The warnings without the one raster's reader adds for alpha, which assimp's path dropped silently.
+// The warnings without the one raster's reader adds for points' alpha, which assimp's path drops silently.
 std::vector<std::string> without_alpha(std::vector<std::string> warnings) {
-    std::erase_if(warnings, [](const std::string& w) { return w.find("alpha (PLY property 'alpha')") != w.npos; });
+    std::erase_if(warnings, [](const std::string& w) { return w.find("their vertex alpha is not drawn") != w.npos; });
     return warnings;
 }
 
@@ -63,6 +63,7 @@ void expect_same(const Model& ours, const Model& theirs, const std::string& what
             EXPECT_EQ(m.normals, n.normals);
             EXPECT_EQ(m.uvs, n.uvs);
             EXPECT_EQ(m.colours, n.colours);
+            EXPECT_EQ(m.alphas, n.alphas);
             EXPECT_EQ(m.points, n.points);
             EXPECT_EQ(m.segments, n.segments);
             for (std::size_t f = 0; f < m.facets.size(); ++f) {
@@ -194,7 +195,7 @@ TEST(PlyReader, UnknownElementsAndPropertiesListsIncludedAreSkippedAsAssimpSkips
     }
 }
 
-TEST(PlyReader, ACloudWithAlphaKeepsItsColoursAndSaysAlphaIsNotDrawnYet) {
+TEST(PlyReader, ACloudWithAlphaKeepsItsColoursAndSaysItsPointsAreDrawnOpaque) {
     PlySpec spec;
     spec.format = "binary_little_endian";
     spec.vertex = {{"float", "x"},     {"float", "y"},    {"float", "z"},    {"uchar", "red"},
@@ -204,7 +205,27 @@ TEST(PlyReader, ACloudWithAlphaKeepsItsColoursAndSaysAlphaIsNotDrawnYet) {
     const std::string text = test_support::ply_text(spec);
     expect_read_alike(text, "alpha");
     const Model model = raster::parse_ply(std::vector<std::uint8_t>(text.begin(), text.end()));
-    EXPECT_EQ(model.warnings,
-              std::vector<std::string>{
-                  "<memory>: the vertices' alpha (PLY property 'alpha') is not drawn yet; drawing them opaque"});
+    ASSERT_EQ(model.parts.size(), 1U);
+    EXPECT_TRUE(model.parts[0].mesh.alphas.empty());
+    EXPECT_EQ(model.warnings, std::vector<std::string>{"<memory>: points and lines are drawn opaque; their vertex "
+                                                       "alpha is not drawn"});
+}
+
+TEST(PlyReader, FacesWithVertexAlphaBlendByItAsCoverageNotDecodedFromSrgb) {
+    for (const std::string& format : kFormats) {
+        PlySpec spec;
+        spec.format = format;
+        spec.vertex = {{"float", "x"},     {"float", "y"},    {"float", "z"},    {"uchar", "red"},
+                       {"uchar", "green"}, {"uchar", "blue"}, {"uchar", "alpha"}};
+        spec.vertices = {{0, 0, 0, 255, 255, 255, 51}, {1, 0, 0, 255, 255, 255, 255}, {0, 1, 0, 255, 255, 255, 0}};
+        spec.faces = {{0, 1, 2}};
+        const std::string text = test_support::ply_text(spec);
+        expect_read_alike(text, format);
+        const Model model = raster::parse_ply(std::vector<std::uint8_t>(text.begin(), text.end()));
+        ASSERT_EQ(model.parts.size(), 1U) << format;
+        EXPECT_EQ(model.parts[0].opacity.mode, raster::AlphaMode::blend) << format;
+        std::vector<float> alphas = model.parts[0].mesh.alphas;
+        std::sort(alphas.begin(), alphas.end());
+        EXPECT_EQ(alphas, (std::vector<float>{0.0F, 51.0F / 255.0F, 1.0F})) << format;
+    }
 }

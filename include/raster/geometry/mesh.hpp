@@ -40,6 +40,10 @@ struct Mesh {
     // Empty, or one per position, multiplying a linear material's diffuse colour
     // (doc/conventions.md#vertex-colours).
     std::vector<LinearRgb> colours{};
+    // Empty, or one per position: the coverage in [0, 1] multiplying the material's alpha where it
+    // blends or masks, as glTF's COLOR_0 alpha does; empty when every vertex is opaque
+    // (doc/conventions.md#vertex-alpha).
+    std::vector<float> alphas{};
     // Vertices drawn as round splats and pairs drawn as lines, beside the facets and over the
     // same vertex arrays (doc/conventions.md#points-and-lines); empty for a surface alone.
     std::vector<std::uint32_t> points{};

@@ -14,13 +14,15 @@
 namespace raster {
 
 // What the vertex stage sees of one corner, in world space, with its texture coordinate, its
-// colour (white for a mesh without vertex colours) and its tangent (zero for a mesh without).
+// colour (white for a mesh without vertex colours), its tangent (zero for a mesh without) and its
+// alpha (1 for a mesh without vertex alphas).
 struct Corner {
     glm::vec3 position;
     glm::vec3 normal;
     glm::vec2 uv{0.0F};
     LinearRgb colour{1.0F, 1.0F, 1.0F};
     glm::vec4 tangent{0.0F};
+    float alpha = 1.0F;
 };
 
 // A value the rasterizer can interpolate: v0 + w1 (v1 - v0) + w2 (v2 - v0).

@@ -8,6 +8,7 @@
 #include "io/gltf/gltf_structure.hpp"
 #include "io/model_builder.hpp"
 #include "io/named_path.hpp"
+#include "io/vertex_alpha.hpp"
 
 #include <raster/image/colour.hpp>
 #include <raster/io/input_file.hpp>
@@ -74,6 +75,7 @@ public:
             model_.warnings.push_back(name_ + ": skipped " + std::to_string(unplaced_) +
                                       " points or line ends that are not finite points");
         }
+        warn_of_vertex_alphas(name_, unreadable_alphas_, model_.warnings);
         return std::move(soup_);
     }
 
@@ -154,11 +156,16 @@ private:
                 const aiVector3D& uv = mesh.mTextureCoords[0][v];
                 soup_.uvs.emplace_back(std::isfinite(uv.x) ? uv.x : 0.0F, std::isfinite(uv.y) ? uv.y : 0.0F);
             }
-            if (has_colours) {  // alpha is not drawn: surfaces are opaque
+            if (has_colours) {
                 const aiColor4D& c = mesh.mColors[0][v];
                 soup_.colours.push_back({linear_channel(c.r, colours_, linear_bytes_),
                                          linear_channel(c.g, colours_, linear_bytes_),
                                          linear_channel(c.b, colours_, linear_bytes_)});
+                const float alpha = vertex_alpha(c.a, unreadable_alphas_);
+                if (alpha < 1.0F || !soup_.alphas.empty()) {  // kept from the first vertex that is see-through
+                    soup_.alphas.resize(soup_.colours.size() - 1, 1.0F);
+                    soup_.alphas.push_back(alpha);
+                }
             }
             if (has_tangents) soup_.tangents.push_back(tangent_of(mesh, v, world, handedness));
         }
@@ -288,7 +295,8 @@ private:
     const ObjOptions& options_;
     Model& model_;
     PolygonSoup soup_;
-    std::size_t unplaced_ = 0;  // points and line ends skipped for coordinates that are not finite
+    std::size_t unplaced_ = 0;           // points and line ends skipped for coordinates that are not finite
+    std::size_t unreadable_alphas_ = 0;  // vertex alphas outside [0, 1] or not a number
     std::unordered_set<const aiNode*> on_path_;
     std::map<std::pair<std::string, TexelEncoding>, std::shared_ptr<const Texture>> loaded_;
 };
@@ -323,6 +331,7 @@ void model_from_scene(const aiScene& scene, const std::filesystem::path& path, c
                     for (const GltfMap& map : kGltfMaps) (*part.metallic_roughness).*map.slot = nullptr;
                 }
             }
+            settle_vertex_alphas(part, colours == ColourSpace::linear);  // glTF's COLOR_0 is the linear one
             // Tangents serve a normal map alone: a part without one does not carry them.
             if (!part.metallic_roughness || !part.metallic_roughness->normal_map) part.mesh.tangents = {};
             model.parts.push_back(std::move(part));

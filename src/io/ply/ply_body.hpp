@@ -23,7 +23,8 @@ struct PlyBody {
     std::vector<glm::vec3> normals;  // empty when the vertices have no nx, ny or nz
     std::vector<glm::vec2> uvs;      // empty without u, v (s, t, texture_u, ...)
     std::vector<LinearRgb> colours;  // empty without red, green, blue (or alpha)
-    bool alpha = false;              // the vertices have an alpha property, which is not drawn yet
+    std::vector<float> alphas;       // empty without alpha; coverage in [0, 1] (doc/conventions.md#vertex-alpha)
+    std::size_t unreadable_alphas = 0;  // alphas clamped into [0, 1]
     // Vertices whose position is not finite: skipped in a point cloud, kept as NaN (so faces
     // still count from 0) when the file has faces.
     std::size_t non_finite = 0;

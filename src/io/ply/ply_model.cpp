@@ -4,7 +4,9 @@
 
 #include "geometry/polygon_triangles.hpp"
 #include "io/model_builder.hpp"
+#include "io/vertex_alpha.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
@@ -30,12 +32,14 @@ void drop_non_finite(PlyBody& body) {
         if (!body.normals.empty()) body.normals[kept] = unit_or_zero(body.normals[v]);
         if (!body.uvs.empty()) body.uvs[kept] = body.uvs[v];
         if (!body.colours.empty()) body.colours[kept] = body.colours[v];
+        if (!body.alphas.empty()) body.alphas[kept] = body.alphas[v];
         ++kept;
     }
     body.positions.resize(kept);
     if (!body.normals.empty()) body.normals.resize(kept);
     if (!body.uvs.empty()) body.uvs.resize(kept);
     if (!body.colours.empty()) body.colours.resize(kept);
+    if (!body.alphas.empty()) body.alphas.resize(kept);
 }
 
 // Every vertex a point of one mesh, in the file's order: the arrays are the mesh's own.
@@ -50,6 +54,7 @@ void add_cloud(PlyBody& body, Model& model, std::size_t& unplaced) {
     mesh.normals.resize(n, glm::vec3(0.0F));  // a point without a normal is drawn unlit
     mesh.uvs = std::move(body.uvs);
     mesh.colours = std::move(body.colours);
+    mesh.alphas = std::move(body.alphas);
     mesh.points.resize(n);
     std::iota(mesh.points.begin(), mesh.points.end(), std::uint32_t{0});
     model.parts.push_back(ply_part(std::move(mesh)));
@@ -64,6 +69,7 @@ void add_faces(PlyBody& body, const std::string& name, double crease_degrees, Mo
     soup.normals = std::move(body.normals);
     soup.uvs = std::move(body.uvs);
     soup.colours = std::move(body.colours);
+    soup.alphas = std::move(body.alphas);
     const auto corner_at = [&](std::uint32_t index) {
         const auto at = static_cast<std::int64_t>(index);
         return SoupCorner{at, normals ? at : kNoIndex, uvs ? at : kNoIndex, colours ? at : kNoIndex, kNoIndex};
@@ -126,12 +132,17 @@ void model_from_ply(PlyBody body, const std::string& name, const ObjOptions& opt
         throw std::runtime_error(name + ": " + kNothingToDraw);
     }
     if (!body.cut_short.empty()) model.warnings.push_back(name + ": " + body.cut_short + "; drawing what is there");
-    // Per-vertex alpha: the one place where it will be wired once Mesh carries it; until then it
-    // is not dropped silently (doc/conventions.md#vertex-colours).
-    if (body.alpha) {
-        model.warnings.push_back(name + ": the vertices' alpha (PLY property 'alpha') is not drawn yet; " +
-                                 "drawing them opaque");
+    warn_of_vertex_alphas(name, body.unreadable_alphas, model.warnings);
+    bool points_lose_alpha = false;
+    for (ModelPart& part : model.parts) {
+        const bool translucent = std::any_of(part.mesh.alphas.begin(), part.mesh.alphas.end(),
+                                             [](float a) { return a < 1.0F; });
+        points_lose_alpha = points_lose_alpha || (translucent && part.mesh.facets.empty());
+        settle_vertex_alphas(part, false);
     }
+    // Points and lines are drawn opaque (doc/conventions.md#vertex-alpha): said, not dropped silently.
+    if (points_lose_alpha)
+        model.warnings.push_back(name + ": points and lines are drawn opaque; their vertex alpha is not drawn");
 }
 
 }  // namespace raster::detail

@@ -35,12 +35,12 @@ VertexSlots::VertexSlots(const PlyElement& element, bool keep_places) : keep_pla
 }
 
 void VertexSlots::reserve(PlyBody& body, std::uint64_t vertices) const {
-    body.alpha = at_[alpha] != kNone;
     body.places_kept = keep_places_;
     body.positions.reserve(vertices);
     if (normals_) body.normals.reserve(vertices);
     if (uvs_) body.uvs.reserve(vertices);
     if (colours_) body.colours.reserve(vertices);
+    if (at_[alpha] != kNone) body.alphas.reserve(vertices);
 }
 
 float VertexSlots::scaled(double value, PlyType type) noexcept {

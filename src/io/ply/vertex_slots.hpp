@@ -4,6 +4,7 @@
 
 #include "io/ply/ply_body.hpp"
 #include "io/ply/ply_layout.hpp"
+#include "io/vertex_alpha.hpp"
 
 #include <algorithm>
 #include <array>
@@ -40,6 +41,7 @@ public:
             if (normals_) body.normals.emplace_back(0.0F);
             if (uvs_) body.uvs.emplace_back(0.0F);
             if (colours_) body.colours.push_back({1.0F, 1.0F, 1.0F});
+            if (at_[alpha] != kNone) body.alphas.push_back(1.0F);
             return;
         }
         body.positions.emplace_back(px, py, -pz);
@@ -56,6 +58,9 @@ public:
         }
         if (colours_)
             body.colours.push_back({channel(red, value_of), channel(green, value_of), channel(blue, value_of)});
+        // Alpha is coverage, scaled like the colour bytes but not decoded from sRGB.
+        if (at_[alpha] != kNone)
+            body.alphas.push_back(vertex_alpha(scaled(value_of(at_[alpha]), types_[alpha]), body.unreadable_alphas));
     }
 
 private:
