@@ -1,3 +1,4 @@
+// Stays whole: the depth pass, the opaque objects and the blended strips share one set of strips, buffers and bins.
 #pragma once
 
 #include <raster/render/scene.hpp>
@@ -17,6 +18,8 @@
 #include "render/shader_choice.hpp"
 
 #include <algorithm>
+#include <any>
+#include <atomic>
 #include <numeric>
 #include <optional>
 #include <span>
@@ -54,6 +57,23 @@ inline AlphaKind alpha_kind_of(const SceneObject& object) noexcept {
     return object.opacity.mode == AlphaMode::mask && varies ? AlphaKind::mask : AlphaKind::none;
 }
 
+// The surface's alpha where a Shader's Varying is that: the opacity factor times the corners' alpha and the alpha
+// map, if any, read where the base colour map is read.
+template <typename Shader>
+auto alpha_reader(const SceneObject& object) {
+    const Texture* alpha_map = object.texture && object.texture->has_alpha() ? object.texture.get() : nullptr;
+    const auto* pbr = std::get_if<MetallicRoughness>(&object.material);
+    const TextureTransform moved = pbr != nullptr ? pbr->base_colour_transform : TextureTransform{};
+    return [&object, alpha_map, moved](const typename Shader::Varying& varying) {
+        const auto& own = own_varying(varying);  // times the corners' alpha, where the shader carries it
+        float alpha = object.opacity.factor * vertex_alpha_of(varying);
+        if constexpr (requires { own.uv; }) {
+            if (alpha_map != nullptr) alpha *= alpha_map->alpha(moved_uv(moved, own.uv, {}).uv, object.sampler.wrap);
+        }
+        return alpha;
+    };
+}
+
 template <detail::Interpolation kMode, typename Camera, typename FrontFor>
 std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& scene, DepthBuffer& depth,
                            std::optional<glm::vec3> eye, detail::WorkerTeam& team, FrontFor front_for,
@@ -80,38 +100,14 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
         framebuffer.clear_rows(strip.y, strip.y + strip.height, scene.background);
         if (tested != nullptr) tested->clear_rows(strip.y, strip.y + strip.height);
     };
-    // Blend objects' fragments, one list per strip, kept from when they are drawn until the strip resolves.
+    // Blend objects' fragments: one list a thread, each strip's gathered, resolved and forgotten in turn.
     std::vector<detail::FragmentList> own_fragments;
     std::vector<detail::FragmentList>& fragments =
         multisampling.fragments != nullptr ? *multisampling.fragments : own_fragments;
-    // One object through `shader`: posed, put through the front end, binned and drawn strip by strip.
-    const auto draw_object = [&](const SceneObject& object, const auto& shader) {
+    // One object posed, put through the front end and binned into strips: its bins and the facets it counted.
+    const auto bin_object = [&](const SceneObject& object, const auto& shader) {
         using Shader = std::remove_cvref_t<decltype(shader)>;
         const bool per_facet = Shader::kFacetNormal || object.mesh->surface == Surface::faceted;
-        detail::check_drawable(framebuffer, tested, *object.mesh);  // before posing reads its facets
-        const AlphaKind alpha_kind = DepthOnly<Shader> ? AlphaKind::none : alpha_kind_of(object);
-        const Texture* alpha_map = object.texture && object.texture->has_alpha() ? object.texture.get() : nullptr;
-        const auto* pbr = std::get_if<MetallicRoughness>(&object.material);
-        const TextureTransform moved = pbr != nullptr ? pbr->base_colour_transform : TextureTransform{};
-        const auto alpha_of = [&](const typename Shader::Varying& varying) {
-            const auto& own = own_varying(varying);  // times the corners' alpha, where the shader carries it
-            float alpha = object.opacity.factor * vertex_alpha_of(varying);
-            if constexpr (requires { own.uv; }) {
-                if (alpha_map != nullptr)  // read where the base colour map is read
-                    alpha *= alpha_map->alpha(moved_uv(moved, own.uv, {}).uv, object.sampler.wrap);
-            }
-            return alpha;
-        };
-        const PointTargets points_target{&framebuffer, tested, samples, depth_test, multisampling.offsets};
-        if (object.mesh->facets.empty()) {  // points and lines alone: no posed copy, no front end
-            if (!cleared) team.for_each(layout.count(), [&](int s) { clear(layout.strip(s)); });
-            cleared = true;
-            if constexpr (!DepthOnly<Shader>) {  // points and lines are drawn in the shading pass only
-                detail::draw_points_lines(scene.camera, scene.points_and_lines, object, shader, team, layout,
-                                          points_target);
-            }
-            return std::size_t{0};
-        }
         detail::Posing posing(*object.mesh, object.model, {.vertex_normals = !per_facet, .facet_normals = per_facet});
         const Mesh& mesh = posing.mesh();  // sized now, filled by the batches below
         auto front = front_for(mesh, shader);
@@ -135,35 +131,63 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
                 front.facets(begin, end, [&](const auto& corners) { batch.add(corners); });
             batch.finish();
         });
-        team.for_each(layout.count(), [&](int s) {
-            const PixelRect strip = layout.strip(s);
-            if (!cleared) clear(strip);
-            detail::LaneBatch<Shader> lanes(shader);  // open across the strip's triangles: full batches on small ones
-            for (const auto& batch : bins) {
-                batch.for_each_in(s, [&](const auto& corners) {
-                    if (alpha_kind != AlphaKind::none) {
-                        detail::gather_triangle<Shader, kMode>(
-                            alpha_kind == AlphaKind::blend ? &fragments[static_cast<std::size_t>(s)] : nullptr,
-                            {samples, tested, &framebuffer}, framebuffer.width(), corners, shader, alpha_of,
-                            object.opacity.cutoff, strip,
-                            samples != nullptr ? multisampling.offsets : std::span(detail::kCentreOnly), lanes);
-                    } else if (samples != nullptr) {
-                        detail::shade_triangle_samples<Shader, kMode>(*samples, depth_test, corners, shader, strip,
-                                                                      multisampling.offsets, &lanes);
-                    } else {
-                        detail::shade_triangle<Shader, detail::FloatDepth, kMode>(framebuffer, tested, corners, shader,
-                                                                                  {}, strip, &lanes);
-                    }
-                });
+        return std::pair{std::move(bins), std::accumulate(counted.begin(), counted.end(), std::size_t{0})};
+    };
+    // An object's binned triangles drawn into strip s, in facet order; a blended one's gathered into `list`.
+    const auto draw_strip = [&](const SceneObject& object, const auto& shader, const auto& bins, int s,
+                                detail::FragmentList* list) {
+        using Shader = std::remove_cvref_t<decltype(shader)>;
+        const AlphaKind alpha_kind = DepthOnly<Shader> ? AlphaKind::none : alpha_kind_of(object);
+        const auto alpha_of = alpha_reader<Shader>(object);
+        const PixelRect strip = layout.strip(s);
+        if (!cleared) clear(strip);
+        detail::LaneBatch<Shader> lanes(shader);  // open across the strip's triangles: full batches on small ones
+        for (const auto& batch : bins) {
+            batch.for_each_in(s, [&](const auto& corners) {
+                if (alpha_kind != AlphaKind::none) {
+                    detail::gather_triangle<Shader, kMode>(
+                        alpha_kind == AlphaKind::blend ? list : nullptr, {samples, tested, &framebuffer},
+                        framebuffer.width(), corners, shader, alpha_of, object.opacity.cutoff, strip,
+                        samples != nullptr ? multisampling.offsets : std::span(detail::kCentreOnly), lanes);
+                } else if (samples != nullptr) {
+                    detail::shade_triangle_samples<Shader, kMode>(*samples, depth_test, corners, shader, strip,
+                                                                  multisampling.offsets, &lanes);
+                } else {
+                    detail::shade_triangle<Shader, detail::FloatDepth, kMode>(framebuffer, tested, corners, shader, {},
+                                                                              strip, &lanes);
+                }
+            });
+        }
+        lanes.flush();
+    };
+    // Binned triangles of each blended object (empty: points and lines alone), drawn strip by strip at the end.
+    std::vector<std::any> blended_bins;
+    // One object through `shader`: binned, drawn strip by strip (kept for the strips' resolve if blended), then its
+    // points and lines.
+    const auto draw_object = [&](const SceneObject& object, const auto& shader) {
+        using Shader = std::remove_cvref_t<decltype(shader)>;
+        detail::check_drawable(framebuffer, tested, *object.mesh);  // before posing reads its facets
+        const bool blended = !DepthOnly<Shader> && alpha_kind_of(object) == AlphaKind::blend;
+        std::size_t counted = 0;
+        if (!cleared && (blended || object.mesh->facets.empty()))  // no strip loop here to clear the strips
+            team.for_each(layout.count(), [&](int s) { clear(layout.strip(s)); });
+        if (object.mesh->facets.empty()) {  // points and lines alone: no posed copy, no front end
+            if (blended) blended_bins.emplace_back();
+        } else {
+            auto [bins, facets] = bin_object(object, shader);
+            counted = facets;
+            if (blended) {
+                blended_bins.emplace_back(std::move(bins));
+            } else {
+                team.for_each(layout.count(), [&](int s) { draw_strip(object, shader, bins, s, nullptr); });
             }
-            lanes.flush();
-        });
+        }
         cleared = true;
         if constexpr (!DepthOnly<Shader>) {  // points and lines are drawn in the shading pass only
             detail::draw_points_lines(scene.camera, scene.points_and_lines, object, shader, team, layout,
-                                      points_target);
+                                      {&framebuffer, tested, samples, depth_test, multisampling.offsets});
         }
-        return std::accumulate(counted.begin(), counted.end(), std::size_t{0});
+        return counted;
     };
     const bool depth_pass =
         depth_test && (order == RenderOptions::DepthFirst::always ||
@@ -190,39 +214,57 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
     }
     const bool blending = std::any_of(scene.objects.begin(), scene.objects.end(),
                                       [](const SceneObject& o) { return o.mesh && blends(o.opacity); });
-    if (blending) {  // after every opaque object, so that the fragments are tested against them all
-        const std::size_t frame_pixels =
-            static_cast<std::size_t>(framebuffer.width()) * static_cast<std::size_t>(framebuffer.height());
-        fragments.resize(static_cast<std::size_t>(layout.count()));
-        for (int s = 0; s < layout.count(); ++s) {
-            const auto strip_pixels =
-                static_cast<std::size_t>(layout.strip(s).height) * static_cast<std::size_t>(framebuffer.width());
-            fragments[static_cast<std::size_t>(s)].clear(
-                kMaxFragmentBytes / sizeof(Fragment) * strip_pixels / frame_pixels,
-                static_cast<std::uint32_t>(static_cast<std::size_t>(layout.strip(s).y) *
-                                           static_cast<std::size_t>(framebuffer.width())),
-                strip_pixels);
-        }
+    if (blending) {  // after every opaque object (and its points and lines), so that the fragments meet them all
         for (const SceneObject& object : scene.objects) {
             if (!object.mesh || !blends(object.opacity)) continue;
             drawn += draw_shaded(object, scene.lights, scene.point_lights, to_eye, eye, scene.darkening,
                                  surroundings.get(), [&](const auto& shader) { return draw_object(object, shader); });
         }
     }
-    if (samples != nullptr) {
-        team.for_each(layout.count(), [&](int s) {
-            const PixelRect strip = layout.strip(s);
+    const auto resolve_strip = [&](int s, detail::FragmentList* list) {
+        const PixelRect strip = layout.strip(s);
+        if (samples != nullptr)
             samples->resolve_rows(strip.y, strip.y + strip.height, framebuffer, scene.background, multisampling.alpha);
-            if (blending)
-                resolve_fragments(fragments[static_cast<std::size_t>(s)], {&framebuffer, samples, nullptr},
-                                  multisampling.alpha, strip.y, strip.y + strip.height);
-        });
-    } else if (blending) {
-        team.for_each(layout.count(), [&](int s) {
-            const PixelRect strip = layout.strip(s);
-            resolve_fragments(fragments[static_cast<std::size_t>(s)], {&framebuffer, nullptr, tested},
+        if (list != nullptr)
+            resolve_fragments(*list, {&framebuffer, samples, samples != nullptr ? nullptr : tested},
                               multisampling.alpha, strip.y, strip.y + strip.height);
+    };
+    if (blending) {
+        // Each strip's blended triangles, in the objects' order, gathered into its thread's list and resolved while
+        // they are still in cache; the next strip reuses the list's memory.
+        const std::size_t frame_pixels =
+            static_cast<std::size_t>(framebuffer.width()) * static_cast<std::size_t>(framebuffer.height());
+        fragments.resize(static_cast<std::size_t>(team.size()));
+        std::atomic<int> next{0};
+        team.for_each(team.size(), [&](int t) {
+            detail::FragmentList& list = fragments[static_cast<std::size_t>(t)];
+            for (int s = next++; s < layout.count(); s = next++) {
+                const PixelRect strip = layout.strip(s);
+                const std::size_t strip_pixels =
+                    static_cast<std::size_t>(strip.height) * static_cast<std::size_t>(framebuffer.width());
+                list.clear(kMaxFragmentBytes / sizeof(Fragment) * strip_pixels / frame_pixels,
+                           static_cast<std::uint32_t>(static_cast<std::size_t>(strip.y) *
+                                                      static_cast<std::size_t>(framebuffer.width())),
+                           strip_pixels);
+                std::size_t k = 0;
+                for (const SceneObject& object : scene.objects) {
+                    if (!object.mesh || !blends(object.opacity)) continue;
+                    const std::any& held = blended_bins[k++];
+                    if (!held.has_value()) continue;
+                    draw_shaded(
+                        object, scene.lights, scene.point_lights, to_eye, eye, scene.darkening, surroundings.get(),
+                        [&](const auto& shader) {
+                            using Bins =
+                                std::vector<detail::StripBins<typename std::remove_cvref_t<decltype(shader)>::Varying>>;
+                            draw_strip(object, shader, std::any_cast<const Bins&>(held), s, &list);
+                            return std::size_t{0};
+                        });
+                }
+                resolve_strip(s, &list);
+            }
         });
+    } else if (samples != nullptr) {
+        team.for_each(layout.count(), [&](int s) { resolve_strip(s, nullptr); });
     }
     return drawn;
 }

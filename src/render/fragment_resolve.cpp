@@ -74,16 +74,28 @@ void resolve_fragments(FragmentList& list, OpaqueResult opaque, std::uint8_t* al
         const float* depths = opaque.samples != nullptr ? opaque.samples->depths(x, y)
                               : opaque.depth != nullptr ? opaque.depth->row(y) + x
                                                         : nullptr;
+        // Fragments that each cover every sample composite the same way over samples that start alike: such a
+        // sample takes the previous one's result, the same bits the same steps would give.
+        const auto every = static_cast<std::uint16_t>((1U << static_cast<unsigned>(samples)) - 1U);
+        const bool whole =
+            samples > 1 && std::all_of(first, last, [&](const Fragment& f) { return f.samples == every; });
         float sum[4] = {0.0F, 0.0F, 0.0F, 0.0F};
+        Composite sample{};
+        const std::uint8_t* previous = nullptr;  // the last sample's opaque colour, null before the first
+        bool previous_shown = false;
         for (int s = 0; s < samples; ++s) {
             const bool covered = depths == nullptr || !std::isinf(depths[s]);
             const bool shown = alpha == nullptr || covered;  // without alpha, the background is opaque too
-            Composite sample{{0.0F, 0.0F, 0.0F}, shown ? 1.0F : 0.0F};
-            for (std::size_t c = 0; c < 3 && shown; ++c)
-                sample.colour[c] = linear[colours[static_cast<std::size_t>(s) * 3 + c]];
-            for (const Fragment* f = first; f != last; ++f) {
-                if ((f->samples & (1U << static_cast<unsigned>(s))) != 0) sample.over(*f, linear);
+            const std::uint8_t* start = colours + static_cast<std::size_t>(s) * 3;
+            if (!(whole && previous != nullptr && shown == previous_shown &&
+                  (!shown || std::equal(start, start + 3, previous)))) {
+                sample = {{0.0F, 0.0F, 0.0F}, shown ? 1.0F : 0.0F};
+                for (std::size_t c = 0; c < 3 && shown; ++c) sample.colour[c] = linear[start[c]];
+                for (const Fragment* f = first; f != last; ++f) {
+                    if ((f->samples & (1U << static_cast<unsigned>(s))) != 0) sample.over(*f, linear);
+                }
             }
+            previous = start, previous_shown = shown;
             for (std::size_t c = 0; c < 3; ++c) sum[c] += sample.colour[c];
             sum[3] += sample.alpha;
         }

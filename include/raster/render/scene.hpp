@@ -160,7 +160,7 @@ public:
 private:
     std::unique_ptr<detail::WorkerTeam> team_;
     std::unique_ptr<detail::SampleBuffer> samples_buffer_;          // kept from frame to frame
-    std::unique_ptr<std::vector<detail::FragmentList>> fragments_;  // one list a strip, kept from frame to frame
+    std::unique_ptr<std::vector<detail::FragmentList>> fragments_;  // one list a thread, kept from frame to frame
     DepthBuffer depth_;
     RenderOptions options_;
     std::vector<std::uint8_t> coverage_;  // of the last frame drawn with more than one sample
