@@ -20,10 +20,10 @@ struct PlyBody {
     // One per vertex kept: positions and normals mirrored in z as OBJ's are (doc/conventions.md#models),
     // normals zero and texture coordinates 0 where not finite, colours in linear light.
     std::vector<glm::vec3> positions;
-    std::vector<glm::vec3> normals;  // empty when the vertices have no nx, ny or nz
-    std::vector<glm::vec2> uvs;      // empty without u, v (s, t, texture_u, ...)
-    std::vector<LinearRgb> colours;  // empty without red, green, blue (or alpha)
-    std::vector<float> alphas;       // empty without alpha; coverage in [0, 1] (doc/conventions.md#vertex-alpha)
+    std::vector<glm::vec3> normals;     // empty when the vertices have no nx, ny or nz
+    std::vector<glm::vec2> uvs;         // empty without u, v (s, t, texture_u, ...)
+    std::vector<LinearRgb> colours;     // empty without red, green, blue (or alpha)
+    std::vector<float> alphas;          // empty without alpha; coverage in [0, 1] (doc/conventions.md#vertex-alpha)
     std::size_t unreadable_alphas = 0;  // alphas clamped into [0, 1]
     // Vertices whose position is not finite: skipped in a point cloud, kept as NaN (so faces
     // still count from 0) when the file has faces.

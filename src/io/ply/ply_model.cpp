@@ -135,8 +135,8 @@ void model_from_ply(PlyBody body, const std::string& name, const ObjOptions& opt
     warn_of_vertex_alphas(name, body.unreadable_alphas, model.warnings);
     bool points_lose_alpha = false;
     for (ModelPart& part : model.parts) {
-        const bool translucent = std::any_of(part.mesh.alphas.begin(), part.mesh.alphas.end(),
-                                             [](float a) { return a < 1.0F; });
+        const bool translucent =
+            std::any_of(part.mesh.alphas.begin(), part.mesh.alphas.end(), [](float a) { return a < 1.0F; });
         points_lose_alpha = points_lose_alpha || (translucent && part.mesh.facets.empty());
         settle_vertex_alphas(part, false);
     }
