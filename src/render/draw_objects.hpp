@@ -64,7 +64,7 @@ auto alpha_reader(const SceneObject& object) {
     const Texture* alpha_map = object.texture && object.texture->has_alpha() ? object.texture.get() : nullptr;
     const auto* pbr = std::get_if<MetallicRoughness>(&object.material);
     const TextureTransform moved = pbr != nullptr ? pbr->base_colour_transform : TextureTransform{};
-    return [&object, alpha_map, moved](const typename Shader::Varying& varying) {
+    return [=, &object](const typename Shader::Varying& varying) {  // implicit: the map goes unused without uv
         const auto& own = own_varying(varying);  // times the corners' alpha, where the shader carries it
         float alpha = object.opacity.factor * vertex_alpha_of(varying);
         if constexpr (requires { own.uv; }) {
@@ -174,8 +174,9 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
         if (object.mesh->facets.empty()) {  // points and lines alone: no posed copy, no front end
             if (blended) blended_bins.emplace_back();
         } else {
-            auto [bins, facets] = bin_object(object, shader);
-            counted = facets;
+            auto binned = bin_object(object, shader);  // no structured binding: clang 14 cannot capture one
+            auto& bins = binned.first;
+            counted = binned.second;
             if (blended) {
                 blended_bins.emplace_back(std::move(bins));
             } else {

@@ -1,6 +1,7 @@
 // PLY files that lie, end early or name what is not there: raster's own reader refuses each in
 // one line naming the line or byte, or keeps what is there with a warning; nothing is allocated
 // by a claim alone (doc/conventions.md#ply-reader).
+#include <raster/geometry/mesh.hpp>
 #include <raster/io/model.hpp>
 #include <raster/io/model_file.hpp>
 #include <raster/io/ply_file.hpp>
@@ -10,10 +11,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
+#include <glm/vec3.hpp>
 
 using raster::Model;
 using test_support::PlySpec;
@@ -155,4 +158,107 @@ TEST(HostilePlys, AFaceWithNoCornersOrTooManyIsRefused) {
     text = test_support::ply_text(spec);
     EXPECT_EQ(error_of(text),
               "<memory>: a face of more than 1024 corners (byte " + std::to_string(body_at(text) + 36) + ")");
+}
+
+namespace {
+
+template <typename T>
+void append_le(std::string& text, T value) {
+    text.append(reinterpret_cast<const char*>(&value), sizeof value);  // the test machine is little-endian
+}
+
+const std::string kTriangleVertices = "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
+
+std::string triangle_body() {
+    std::string body;
+    for (const float v : {0.0F, 0.0F, 0.0F, 1.0F, 0.0F, 0.0F, 0.0F, 1.0F, 0.0F}) append_le(body, v);
+    return body;
+}
+
+}  // namespace
+
+TEST(HostilePlys, AListLengthThatIsNotAWholeNumberIsRefusedInOneLine) {
+    const std::string header = "ply\nformat binary_little_endian 1.0\n" + kTriangleVertices +
+                               "element face 1\nproperty list float int vertex_indices\nend_header\n";
+    for (const float length : {std::numeric_limits<float>::quiet_NaN(), 2.5F}) {
+        std::string text = header + triangle_body();
+        append_le(text, length);
+        for (const std::int32_t corner : {0, 1, 2}) append_le(text, corner);
+        const std::string error = error_of(text);
+        const std::string said = std::isnan(length) ? "nan" : "2.5";
+        EXPECT_EQ(error.rfind("<memory>: 'face' item 1 has a list whose length " + said + " is not a whole number", 0),
+                  0U)
+            << error;
+        EXPECT_EQ(error.find('\n'), std::string::npos);
+    }
+    const std::string ascii = "ply\nformat ascii 1.0\n" + kTriangleVertices +
+                              "element face 1\nproperty list float int vertex_indices\nend_header\n"
+                              "0 0 0\n1 0 0\n0 1 0\nnan 0 1 2\n";
+    EXPECT_EQ(error_of(ascii), "<memory>:13: 'face' item 1 has a list whose length nan is not a whole number");
+}
+
+TEST(HostilePlys, AnElementOfNoPropertiesTakesNoBytesOfTheNext) {
+    // Were each of the five items to take a byte, the face's list would be read out of step.
+    std::string text = "ply\nformat binary_little_endian 1.0\n" + kTriangleVertices +
+                       "element info 5\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n" +
+                       triangle_body();
+    append_le(text, std::uint8_t{3});
+    for (const std::int32_t corner : {0, 1, 2}) append_le(text, corner);
+    const Model model = raster::parse_ply(bytes_of(text));
+    ASSERT_EQ(model.parts.size(), 1U);
+    EXPECT_EQ(model.parts[0].mesh.facets.size(), 1U);
+    EXPECT_TRUE(model.warnings.empty()) << model.warnings.front();
+}
+
+TEST(HostilePlys, RecordsListsAndLinesAcrossTheReadersBlocksReadWhole) {
+    // More than the reader's 4 MiB block: 15-byte records, 13-byte skipped lists and ASCII lines
+    // all straddle a block's end somewhere, and every vertex must still read as written.
+    constexpr std::uint32_t kVertices = 300'000, kSkipped = 400'000;
+    const auto expected = [](std::uint32_t i) {
+        return glm::vec3(static_cast<float>(i), static_cast<float>(i % 7), -0.5F);
+    };
+    std::string binary = "ply\nformat binary_little_endian 1.0\nelement vertex " + std::to_string(kVertices) +
+                         "\nproperty float x\nproperty float y\nproperty float z\nproperty uchar red\nproperty uchar "
+                         "green\nproperty uchar blue\nelement blob " +
+                         std::to_string(kSkipped) +
+                         "\nproperty list uchar int data\nelement face 1\nproperty list uchar int vertex_indices\n"
+                         "end_header\n";
+    std::string ascii = "ply\nformat ascii 1.0\nelement vertex " + std::to_string(kVertices) +
+                        "\nproperty float x\nproperty float y\nproperty float z\nproperty uchar red\nproperty uchar "
+                        "green\nproperty uchar blue\nend_header\n";
+    for (std::uint32_t i = 0; i < kVertices; ++i) {
+        const glm::vec3 p = expected(i);
+        for (const float v : {p.x, p.y, -p.z}) append_le(binary, v);
+        for (const std::uint8_t c : {std::uint8_t{255}, static_cast<std::uint8_t>(i % 256), std::uint8_t{0}})
+            append_le(binary, c);
+        ascii += std::to_string(i) + " " + std::to_string(i % 7) + " 0.5 255 " + std::to_string(i % 256) + " 0\n";
+    }
+    for (std::uint32_t i = 0; i < kSkipped; ++i) {
+        append_le(binary, std::uint8_t{3});
+        for (const std::int32_t entry : {7, 8, 9}) append_le(binary, entry);
+    }
+    append_le(binary, std::uint8_t{3});
+    for (const std::int32_t corner : {0, 1, 7}) append_le(binary, corner);  // not in a line
+    ASSERT_GT(binary.size(), std::size_t{8} << 20);
+    const Model mesh = raster::parse_ply(bytes_of(binary));
+    ASSERT_EQ(mesh.parts.size(), 1U);
+    EXPECT_EQ(mesh.parts[0].mesh.facets.size(), 1U);
+    const Model cloud = raster::parse_ply(bytes_of(ascii));
+    ASSERT_EQ(cloud.parts.size(), 1U);
+    const raster::Mesh& points = cloud.parts[0].mesh;
+    ASSERT_EQ(points.positions.size(), kVertices);
+    ASSERT_EQ(points.colours.size(), kVertices);
+    std::size_t wrong = 0;
+    for (std::uint32_t i = 0; i < kVertices; ++i) {
+        wrong += points.positions[i] != expected(i);
+        wrong += points.colours[i].r != 1.0F || points.colours[i].b != 0.0F;
+    }
+    EXPECT_EQ(wrong, 0U);
+    // The binary cloud alone, its records straddling the block's end.
+    const std::string cloud_binary = binary.substr(0, binary.find("element blob")) + "end_header\n" +
+                                     binary.substr(binary.find("end_header\n") + 11, std::size_t{15} * kVertices);
+    const Model binary_cloud = raster::parse_ply(bytes_of(cloud_binary));
+    ASSERT_EQ(binary_cloud.parts.size(), 1U);
+    EXPECT_EQ(binary_cloud.parts[0].mesh.positions, points.positions);
+    EXPECT_EQ(binary_cloud.parts[0].mesh.colours, points.colours);
 }

@@ -229,3 +229,21 @@ TEST(PlyReader, FacesWithVertexAlphaBlendByItAsCoverageNotDecodedFromSrgb) {
         EXPECT_EQ(alphas, (std::vector<float>{0.0F, 51.0F / 255.0F, 1.0F})) << format;
     }
 }
+
+TEST(PlyReader, AnAsciiByteColourAbove255ReadsAsFullNotPastTheTable) {
+    PlySpec spec;
+    spec.vertex = {{"float", "x"},   {"float", "y"},     {"float", "z"},
+                   {"uchar", "red"}, {"uchar", "green"}, {"uchar", "blue"}};
+    spec.vertices = {{0, 0, 0, 300, 255, 0}, {1, 2, 3, 100000, 0, 128}};
+    spec.face_list = "";
+    const std::string text = test_support::ply_text(spec);
+    const Model model = raster::parse_ply(std::vector<std::uint8_t>(text.begin(), text.end()));
+    ASSERT_EQ(model.parts.size(), 1U);
+    const std::vector<raster::LinearRgb>& colours = model.parts[0].mesh.colours;
+    ASSERT_EQ(colours.size(), 2U);
+    EXPECT_EQ(colours[0].r, 1.0F);
+    EXPECT_EQ(colours[0].g, 1.0F);
+    EXPECT_EQ(colours[0].b, 0.0F);
+    EXPECT_EQ(colours[1].r, 1.0F);
+    EXPECT_EQ(colours[1].b, static_cast<float>(raster::linear_from_srgb_channel(128.0F / 255.0F)));
+}

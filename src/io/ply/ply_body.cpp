@@ -5,9 +5,12 @@
 #include "io/ply/ply_values.hpp"
 #include "io/ply/vertex_slots.hpp"
 
+#include <raster/io/input_file.hpp>
 #include <raster/io/obj_file.hpp>
 
 #include <algorithm>
+#include <array>
+#include <charconv>
 #include <cmath>
 #include <stdexcept>
 #include <string_view>
@@ -22,6 +25,13 @@ std::uint64_t least_bytes(const PlyElement& element, bool ascii) {
     for (const PlyProperty& p : element.properties)
         bytes += ascii ? 2U : static_cast<std::uint64_t>(ply_type_bytes(p.list ? p.count_type : p.type));
     return std::max<std::uint64_t>(bytes, 1);
+}
+
+// A number the file wrote, for a message: shortest form, whole numbers without a point, NaN as nan.
+std::string number_text(double value) {
+    std::array<char, 32> text{};
+    const std::to_chars_result written = std::to_chars(text.data(), text.data() + text.size(), value);
+    return std::string(text.data(), written.ptr);
 }
 
 bool fixed_size(const PlyElement& element) {
@@ -110,13 +120,13 @@ private:
 
     // Binary elements of one size (a cloud's vertices), decoded a block at a time.
     void walk_records(const PlyElement& element, bool vertices) {
-        const auto record = static_cast<std::size_t>(least_bytes(element, false));
         std::vector<std::size_t> offsets;
-        std::size_t at = 0;
+        std::size_t record = 0;
         for (const PlyProperty& p : element.properties) {
-            offsets.push_back(at);
-            at += static_cast<std::size_t>(ply_type_bytes(p.type));
+            offsets.push_back(record);
+            record += static_cast<std::size_t>(ply_type_bytes(p.type));
         }
+        if (record == 0) return;  // items of no properties take no bytes
         for (std::uint64_t i = 0; i < element.count;) {
             const std::span<const std::uint8_t> held = bytes_.ahead(record);
             const std::uint64_t whole = std::min<std::uint64_t>(held.size() / record, element.count - i);
@@ -152,10 +162,10 @@ private:
                 continue;
             }
             const auto entry = static_cast<std::uint64_t>(ply_type_bytes(p.type));
+            check_length(element, i, value, start);
             if (value < 0.0 || value > static_cast<double>(bytes_.left() / entry)) {
                 fail_as_before("'" + element.name + "' item " + std::to_string(i + 1) + " has a list of " +
-                               (value < 0.0 ? std::string("negative length")
-                                            : std::to_string(static_cast<std::uint64_t>(value)) + " entries") +
+                               (value < 0.0 ? std::string("negative length") : number_text(value) + " entries") +
                                ", more than the bytes left can hold");
             }
             const auto length = static_cast<std::uint64_t>(value);
@@ -200,14 +210,15 @@ private:
             double value = 0.0;
             if (!ply_text_value(word, p.list ? p.count_type : p.type, value)) {
                 if (!ended && line.empty()) return false;  // a number cut short at the end of the data
-                fail("'" + std::string(word.substr(0, 40)) + "' is not a number of the type '" + element.name +
-                         "' property '" + p.name + "' has",
+                fail("'" + printable(word, 40) + "' is not a number of the type '" + element.name + "' property '" +
+                         p.name + "' has",
                      0);
             }
             if (!p.list) {
                 values_[k] = value;
                 continue;
             }
+            check_length(element, i, value, 0);
             if (value < 0.0 || value > static_cast<double>(line.size() / 2 + 1)) {
                 fail_as_before("'" + element.name + "' item " + std::to_string(i + 1) +
                                " has a list longer than its line");
@@ -225,7 +236,7 @@ private:
                 }
                 if (!ply_text_value(entry, p.type, index)) {
                     if (!ended && line.empty()) return false;
-                    fail("'" + std::string(entry.substr(0, 40)) + "' is not a number of the type '" + element.name +
+                    fail("'" + printable(entry, 40) + "' is not a number of the type '" + element.name +
                              "' property '" + p.name + "' has",
                          0);
                 }
@@ -234,6 +245,15 @@ private:
         }
         if (vertices) slots_.keep([&](std::size_t p) { return values_[p]; }, body_);
         return true;
+    }
+
+    // A list's length of a float type must still be a whole number: NaN or 2.5 is none.
+    void check_length(const PlyElement& element, std::uint64_t i, double value, std::uint64_t start) const {
+        if (std::isnan(value) || (value > 0.0 && value != std::floor(value))) {
+            fail("'" + element.name + "' item " + std::to_string(i + 1) + " has a list whose length " +
+                     number_text(value) + " is not a whole number",
+                 start);
+        }
     }
 
     void begin_face(std::uint64_t corners, std::uint64_t i, std::uint64_t start) {
@@ -245,8 +265,8 @@ private:
 
     void add_corner(double index, std::uint64_t i, std::uint64_t start) {
         if (!(index >= 0.0 && index < static_cast<double>(body_.declared_vertices)) || index != std::floor(index)) {
-            fail("face " + std::to_string(i + 1) + " names vertex " + std::to_string(static_cast<long long>(index)) +
-                     ", but the PLY has " + std::to_string(body_.declared_vertices) + " vertices (counting from 0)",
+            fail("face " + std::to_string(i + 1) + " names vertex " + number_text(index) + ", but the PLY has " +
+                     std::to_string(body_.declared_vertices) + " vertices (counting from 0)",
                  start);
         }
         body_.corners.push_back(static_cast<std::uint32_t>(index));

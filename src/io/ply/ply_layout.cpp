@@ -2,6 +2,8 @@
 
 #include "io/ply_header.hpp"
 
+#include <raster/io/input_file.hpp>
+
 #include <algorithm>
 #include <array>
 #include <charconv>
@@ -35,7 +37,7 @@ PlyType type_named(std::string_view word) {
     for (const auto& [name, type] : kTypeNames) {
         if (name == word) return type;
     }
-    throw std::runtime_error("the PLY header names an unknown type '" + std::string(word.substr(0, 40)) + "'");
+    throw std::runtime_error("the PLY header names an unknown type '" + printable(word, 40) + "'");
 }
 
 // Lines and elements that only assimp's reader gives meaning to.
@@ -78,7 +80,7 @@ PlyLayout ply_layout(std::span<const std::uint8_t> head) {
         ++layout.header_lines;
         const std::vector<std::string_view> words = ply_words(line);
         if (words.empty()) continue;
-        if (words[0] == "end_header") break;
+        if (words[0] == "end_header" && words.size() == 1) break;  // as ply_header_problem ends the header
         if (words[0] == "format" && words.size() > 1) {
             layout.encoding = words[1] == "ascii"               ? PlyEncoding::ascii
                               : words[1] == "binary_big_endian" ? PlyEncoding::big_endian
@@ -86,21 +88,21 @@ PlyLayout ply_layout(std::span<const std::uint8_t> head) {
         }
         if (words[0] == "comment" && words.size() > 1 && words[1] == "TextureFile") layout.needs_assimp = true;
         if (words[0] == "element" && words.size() == 3) {
-            PlyElement element{std::string(words[1]), 0, {}};
+            PlyElement element{printable(words[1]), 0, {}};  // names go into messages
             std::from_chars(words[2].data(), words[2].data() + words[2].size(), element.count);
             for (const PlyElement& other : layout.elements) {
                 if (other.name == element.name)
-                    throw std::runtime_error("the PLY header declares the element '" +
-                                             std::string(words[1].substr(0, 40)) + "' twice");
+                    throw std::runtime_error("the PLY header declares the element '" + printable(words[1], 40) +
+                                             "' twice");
             }
             layout.elements.push_back(std::move(element));
         }
         if (words[0] == "property" && !layout.elements.empty()) {
             PlyProperty property;
             if (words.size() == 5 && words[1] == "list") {
-                property = {std::string(words[4]), type_named(words[3]), true, type_named(words[2])};
+                property = {printable(words[4]), type_named(words[3]), true, type_named(words[2])};
             } else if (words.size() == 3) {
-                property = {std::string(words[2]), type_named(words[1]), false, PlyType::uint8};
+                property = {printable(words[2]), type_named(words[1]), false, PlyType::uint8};
             }
             layout.elements.back().properties.push_back(std::move(property));
         }

@@ -137,7 +137,8 @@ void model_from_ply(PlyBody body, const std::string& name, const ObjOptions& opt
     for (ModelPart& part : model.parts) {
         const bool translucent =
             std::any_of(part.mesh.alphas.begin(), part.mesh.alphas.end(), [](float a) { return a < 1.0F; });
-        points_lose_alpha = points_lose_alpha || (translucent && part.mesh.facets.empty());
+        const bool loose = !part.mesh.points.empty() || !part.mesh.segments.empty();
+        points_lose_alpha = points_lose_alpha || (translucent && loose);
         settle_vertex_alphas(part, false);
     }
     // Points and lines are drawn opaque (doc/conventions.md#vertex-alpha): said, not dropped silently.

@@ -74,6 +74,11 @@ private:
     // then decoded from sRGB: bytes through the table, as the formula gives them.
     template <typename ValueOf>
     float channel(Slot s, const ValueOf& value_of) const {
+        // A byte is its own table index, the value the general path gives it; ASCII may write more than 255.
+        if (types_[s] == PlyType::uint8 && at_[s] != kNone) {
+            if (const double byte = value_of(at_[s]); byte <= 255.0)
+                return linear_bytes_[static_cast<std::size_t>(byte)];
+        }
         const float written = at_[s] == kNone ? 0.0F : scaled(value_of(at_[s]), types_[s]);
         const float c = std::isfinite(written) ? std::clamp(written, 0.0F, 1.0F) : 1.0F;
         const auto b = static_cast<std::size_t>(c * 255.0F + 0.5F);
