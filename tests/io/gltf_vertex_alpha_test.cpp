@@ -3,7 +3,6 @@
 #include <raster/io/model_file.hpp>
 #include <raster/render/model_scene.hpp>
 
-#include "io/model_wire.hpp"
 #include "support/gltf_square.hpp"
 #include "support/scratch.hpp"
 
@@ -84,24 +83,4 @@ TEST(GltfVertexAlpha, AlphasOutsideZeroToOneAreClampedWithOneWarning) {
     std::size_t named = 0;
     for (const std::string& w : model.warnings) named += w.find("3 vertex alphas outside [0, 1]") != std::string::npos;
     EXPECT_EQ(named, 1U) << testing::PrintToString(model.warnings);
-}
-
-TEST(GltfVertexAlpha, AlphasCrossTheWireExactlyAndAWrongCountIsRefused) {
-    raster::Model model;
-    model.parts.emplace_back();
-    raster::Mesh& mesh = model.parts.back().mesh;
-    mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
-    mesh.normals.assign(3, glm::vec3(0, 0, -1));
-    mesh.alphas = {0.25F, 1.0F, 0.0F};
-    mesh.facets.push_back({{0, 2, 1}, glm::vec3(0, 0, -1)});
-    std::vector<std::uint8_t> bytes;
-    raster::detail::append_model_wire(model, bytes);
-    EXPECT_EQ(bytes.size(), raster::detail::model_wire_bytes(model));
-    const raster::Model carried = raster::detail::model_from_wire(bytes);
-    ASSERT_EQ(carried.parts.size(), 1U);
-    EXPECT_EQ(carried.parts[0].mesh.alphas, mesh.alphas);
-    mesh.alphas.pop_back();
-    bytes.clear();
-    raster::detail::append_model_wire(model, bytes);
-    EXPECT_THROW((void)raster::detail::model_from_wire(bytes), std::runtime_error);
 }

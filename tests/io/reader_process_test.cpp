@@ -163,25 +163,44 @@ TEST(ReaderProcess, TheServiceForksReadersThatGiveWhatADirectChildGives) {
     EXPECT_THROW((void)raster::read_model(obj, through), std::runtime_error);
 }
 
-// A normal-mapped part's tangents come back from the reader process as they were, and a count
-// that does not match the positions is refused.
-TEST(ReaderProcess, TangentsCrossTheWireExactlyAndAWrongCountIsRefused) {
+// A one-facet model with a per-vertex field that `fill` sets and `read` reads back: it crosses the
+// wire as it was, and once `cut` leaves it a count that does not match the positions, it is refused.
+template <typename Fill, typename Read, typename Cut>
+void expect_wire_carries(Fill fill, Read read, Cut cut) {
     raster::Model model;
     model.parts.emplace_back();
     raster::Mesh& mesh = model.parts.back().mesh;
     mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
     mesh.normals.assign(3, glm::vec3(0, 0, -1));
-    mesh.uvs = {{0, 0}, {1, 0}, {0, 1}};
-    mesh.tangents = {{1, 0, 0, -1}, {0.6F, 0.8F, 0, 1}, {0, 1, 0, -1}};
     mesh.facets.push_back({{0, 2, 1}, glm::vec3(0, 0, -1)});
+    fill(mesh);
     std::vector<std::uint8_t> bytes;
     raster::detail::append_model_wire(model, bytes);
     EXPECT_EQ(bytes.size(), raster::detail::model_wire_bytes(model));
     const raster::Model carried = raster::detail::model_from_wire(bytes);
     ASSERT_EQ(carried.parts.size(), 1U);
-    EXPECT_EQ(carried.parts[0].mesh.tangents, mesh.tangents);
-    mesh.tangents.pop_back();
+    EXPECT_EQ(read(carried.parts[0].mesh), read(mesh));
+    cut(mesh);
     bytes.clear();
     raster::detail::append_model_wire(model, bytes);
     EXPECT_THROW((void)raster::detail::model_from_wire(bytes), std::runtime_error);
+}
+
+// A normal-mapped part's tangents come back from the reader process as they were.
+TEST(ReaderProcess, TangentsCrossTheWireExactlyAndAWrongCountIsRefused) {
+    expect_wire_carries(
+        [](raster::Mesh& m) {
+            m.uvs = {{0, 0}, {1, 0}, {0, 1}};
+            m.tangents = {{1, 0, 0, -1}, {0.6F, 0.8F, 0, 1}, {0, 1, 0, -1}};
+        },
+        [](const raster::Mesh& m) { return m.tangents; }, [](raster::Mesh& m) { m.tangents.pop_back(); });
+}
+
+// Vertex alphas likewise (doc/conventions.md#vertex-alpha).
+TEST(ReaderProcess, VertexAlphasCrossTheWireExactlyAndAWrongCountIsRefused) {
+    expect_wire_carries(
+        [](raster::Mesh& m) {
+            m.alphas = {0.25F, 1.0F, 0.0F};
+        },
+        [](const raster::Mesh& m) { return m.alphas; }, [](raster::Mesh& m) { m.alphas.pop_back(); });
 }
