@@ -1,6 +1,6 @@
-// PLY files that lie, end early or name what is not there: raster's own reader refuses each in
-// one line naming the line or byte, or keeps what is there with a warning; nothing is allocated
-// by a claim alone (doc/conventions.md#ply-reader).
+// Stays whole: every way a PLY can lie, read side by side. Files that lie, end early or name what
+// is not there: raster's own reader refuses each in one line naming the line or byte, or keeps what
+// is there with a warning; nothing is allocated by a claim alone (doc/conventions.md#ply-reader).
 #include <raster/geometry/mesh.hpp>
 #include <raster/io/model.hpp>
 #include <raster/io/model_file.hpp>
