@@ -18,10 +18,6 @@ void require_side(int side, const char* name) {
 
 bool is_finite(glm::dvec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-// Written out so that a zero component contributes exactly nothing: the default camera then
-// reproduces world x and y bit for bit.
-double dot_exact(glm::dvec3 a, glm::dvec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-
 }  // namespace
 
 OrthoCamera::OrthoCamera(int width, int height) {
@@ -54,11 +50,6 @@ OrthoCamera OrthoCamera::look_at(int width, int height, glm::vec3 eye, glm::vec3
     camera.up_ = glm::normalize(upright);
     camera.right_ = glm::cross(camera.up_, camera.forward_);  // left-handed: right = up x forward
     return camera;
-}
-
-glm::dvec3 OrthoCamera::view_from_world(glm::vec3 world) const noexcept {
-    const glm::dvec3 offset = glm::dvec3(world) - eye_;
-    return {dot_exact(right_, offset), dot_exact(up_, offset), dot_exact(forward_, offset)};
 }
 
 glm::dvec2 OrthoCamera::screen_from_world(glm::vec3 world) const noexcept {

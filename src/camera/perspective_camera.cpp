@@ -43,16 +43,6 @@ PerspectiveCamera PerspectiveCamera::first_person(int width, int height, glm::ve
     return look_at(width, height, eye, glm::vec3(target), {0.0F, 1.0F, 0.0F}, lens);
 }
 
-glm::dvec4 PerspectiveCamera::clip_from_view(glm::dvec3 view) const noexcept {
-    const double depth_scale = lens_.far / (lens_.far - lens_.near);
-    return {view.x * x_scale_, view.y * y_scale_, (view.z - lens_.near) * depth_scale, view.z};
-}
-
-glm::dvec2 PerspectiveCamera::screen_from_clip(glm::dvec4 clip) const noexcept {
-    const double x_ndc = clip.x / clip.w, y_ndc = clip.y / clip.w;
-    return {(x_ndc + 1.0) * width_ / 2.0 - 0.5 - offset_.x, (1.0 - y_ndc) * height_ / 2.0 - 0.5 - offset_.y};
-}
-
 PerspectiveCamera perspective_matching(const OrthoCamera& flat, int width, int height, double fov_degrees) {
     if (!(fov_degrees > 0.0 && fov_degrees < 180.0)) {
         throw std::invalid_argument("field of view must be between 0 and 180 degrees, got " +

@@ -1,6 +1,7 @@
 #include <raster/io/model.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <glm/geometric.hpp>
@@ -59,8 +60,10 @@ Bounds bounds_of(const Model& model) {
     });
     if (!any) throw std::invalid_argument(kNothingToDraw);
     const glm::dvec3 centre = bounds.centre();
+    double farthest = 0.0;  // squared: the root of the largest is the largest root, as rounded
     for_each_drawn_position(
-        model, [&](const glm::dvec3& p) { bounds.radius = std::max(bounds.radius, glm::length(p - centre)); });
+        model, [&](const glm::dvec3& p) { farthest = std::max(farthest, glm::dot(p - centre, p - centre)); });
+    bounds.radius = std::sqrt(farthest);
     return bounds;
 }
 

@@ -3,6 +3,7 @@
 #include "io/model_format.hpp"
 #include "io/model_formats.hpp"
 #include "io/model_reading.hpp"
+#include "io/ply/ply_reading.hpp"
 #include "io/reader_process.hpp"
 
 #include <raster/io/input_file.hpp>
@@ -18,8 +19,10 @@ namespace detail {
 
 std::string reader_name(const std::filesystem::path& path) { return format_name(model_format_of(path), path); }
 
-Model read_model_here(const std::filesystem::path& path, const ObjOptions& options) {
-    const ModelFormat format = model_format_of(path);
+namespace {
+
+// Throws std::runtime_error with one line when the first bytes do not fit the format.
+void check_content(const std::filesystem::path& path, const ObjOptions& options, ModelFormat format) {
     const std::string name = printable(path.string());
     // The first bytes decide whether the named reader may run at all (doc/conventions.md#reader-process).
     InputRules rules;
@@ -37,6 +40,13 @@ Model read_model_here(const std::filesystem::path& path, const ObjOptions& optio
     }
     if (const std::string problem = content_problem(format, head, size, path); !problem.empty())
         throw std::runtime_error(name + ": " + problem);
+}
+
+}  // namespace
+
+Model read_model_here(const std::filesystem::path& path, const ObjOptions& options) {
+    const ModelFormat format = model_format_of(path);
+    check_content(path, options, format);
     if (format == ModelFormat::obj) return read_obj(path, options);
     if (format == ModelFormat::ply)
         return read_ply(path, options);  // raster's own reader (doc/conventions.md#ply-reader)
@@ -55,10 +65,17 @@ bool has_model_ending(const std::filesystem::path& path) {
 
 Model read_model(const std::filesystem::path& path, const ObjOptions& options) {
     const std::string reader = detail::reader_name(path);  // an unknown ending is refused here, before any fork
-    if (options.limits.separate_process && options.limits.service != nullptr)
-        return options.limits.service->read(path, options);
-    return detail::read_in_child([&] { return detail::read_model_here(path, options); }, printable(path.string()),
-                                 reader, options.limits);
+    const auto in_child = [&] {
+        if (options.limits.separate_process && options.limits.service != nullptr)
+            return options.limits.service->read(path, options);
+        return detail::read_in_child([&] { return detail::read_model_here(path, options); }, printable(path.string()),
+                                     reader, options.limits);
+    };
+    const detail::ModelFormat format = detail::model_format_of(path);
+    if (format != detail::ModelFormat::ply || !options.limits.separate_process) return in_child();
+    // raster's own reader runs here, with no copy back (doc/conventions.md#reader-process)
+    detail::check_content(path, options, format);
+    return detail::read_ply_here(path, options, in_child);
 }
 
 }  // namespace raster

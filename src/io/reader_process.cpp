@@ -220,11 +220,17 @@ ChildOutcome run_reader_child(const std::function<Model()>& read, const ReaderLi
     return outcome;
 }
 
+std::uint64_t memory_in_force(const ReaderLimits& limits) { return limits_in_force(limits).first; }
+
+std::string memory_refusal(const std::string& name, const std::string& reader, const ReaderLimits& limits) {
+    return name + ": the " + reader + " reader needed more than " + memory_text(memory_in_force(limits)) +
+           " of memory; raise --max-memory to allow it";
+}
+
 Model model_from_outcome(const ChildOutcome& outcome, const std::string& name, const std::string& reader,
                          const ReaderLimits& limits) {
     const auto [max_memory, max_seconds] = limits_in_force(limits);
-    const std::string memory_refusal = name + ": the " + reader + " reader needed more than " +
-                                       memory_text(max_memory) + " of memory; raise --max-memory to allow it";
+    const std::string memory_refusal = detail::memory_refusal(name, reader, limits);
     const std::string time_refusal = name + ": the " + reader + " reader took more than " + seconds_text(max_seconds) +
                                      "; raise --max-seconds to allow it";
     if (!outcome.start_error.empty())

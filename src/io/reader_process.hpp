@@ -36,6 +36,13 @@ struct ChildOutcome {
 [[nodiscard]] Model model_from_outcome(const ChildOutcome& outcome, const std::string& name, const std::string& reader,
                                        const ReaderLimits& limits);
 
+// The memory a reader may take under `limits`: its own, or the default.
+[[nodiscard]] std::uint64_t memory_in_force(const ReaderLimits& limits);
+
+// The one line for a reader that needs more memory than `limits` allow.
+[[nodiscard]] std::string memory_refusal(const std::string& name, const std::string& reader,
+                                         const ReaderLimits& limits);
+
 [[nodiscard]] Model read_in_child(const std::function<Model()>& read, const std::string& name,
                                   const std::string& reader, const ReaderLimits& limits);
 

@@ -3,11 +3,12 @@
 #include <raster/image/framebuffer.hpp>
 #include <raster/rasterize/depth_buffer.hpp>
 
-#include "rasterize/lane_batch.hpp"
 #include "rasterize/sample_buffer.hpp"
 #include "rasterize/sample_coverage.hpp"
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <span>
@@ -67,43 +68,63 @@ inline void draw_splat(Framebuffer& colour, DepthBuffer* depth, const Splat& spl
         draw_pixel(own_x, own_y, depth != nullptr ? depth->row(own_y) : nullptr);
 }
 
+// The farthest any sample lies from its pixel's centre along x or y: pixels farther than that
+// beyond a disc hold none of its samples. A hair more, so rounding never drops one that would pass.
+inline double sample_spread(std::span<const SampleOffset> offsets) noexcept {
+    double spread = 0.0;
+    for (const SampleOffset& offset : offsets) spread = std::max({spread, std::abs(offset.x), std::abs(offset.y)});
+    return spread + 1e-6;
+}
+
 // The same at the samples of `target`: every sample inside the disc is tested (when
 // `depth_test`) and written, so the disc's edge is anti-aliased by the samples. The pixel holding
 // the centre always keeps at least its sample nearest the centre.
 inline void draw_splat_samples(SampleBuffer& target, bool depth_test, const Splat& splat, float radius,
                                const PixelRect& rows, std::span<const SampleOffset> offsets) noexcept {
     const double r2 = static_cast<double>(radius) * radius;
-    const double reach = radius + 0.5;  // samples lie within half a pixel of their pixel's centre
+    const std::size_t count = std::min<std::size_t>(offsets.size(), kMaxSamples);
+    const double reach = radius + sample_spread(offsets.first(count));
     const int y_first = std::max(static_cast<int>(std::ceil(splat.y - reach)), rows.y);
     const int y_last = std::min(static_cast<int>(std::floor(splat.y + reach)), rows.y + rows.height - 1);
     const int x_first = std::max(static_cast<int>(std::ceil(splat.x - reach)), 0);
     const int x_last = std::min(static_cast<int>(std::floor(splat.x + reach)), target.width() - 1);
     const int own_x = pixel_holding(splat.x), own_y = pixel_holding(splat.y);
-    const std::size_t count = std::min<std::size_t>(offsets.size(), kMaxSamples);
+    // Selects, not branches: whether a cloud's splat lies in front is a coin toss the processor cannot predict.
     const auto draw_pixel = [&](int x, int y, std::uint32_t covered) {
         target.touch(x, y);
         float* nearest = target.depths(x, y);
-        std::uint32_t passed = 0;
+        std::uint8_t* colours = target.colours(x, y);
+        const std::uint32_t depth_bits = std::bit_cast<std::uint32_t>(splat.depth);
+        const std::array<std::uint8_t, 3> colour{splat.colour.r, splat.colour.g, splat.colour.b};
         for (std::size_t s = 0; s < count; ++s) {
-            if ((covered & (std::uint32_t{1} << s)) == 0) continue;
-            if (depth_test && splat.depth > nearest[s]) continue;  // something nearer is already there
-            nearest[s] = splat.depth;
-            passed |= std::uint32_t{1} << s;
+            const bool behind = depth_test && splat.depth > nearest[s];  // something nearer is already there
+            const std::uint32_t keep = 0U - (((covered >> s) & 1U) & static_cast<std::uint32_t>(!behind));
+            nearest[s] = std::bit_cast<float>((depth_bits & keep) | (std::bit_cast<std::uint32_t>(nearest[s]) & ~keep));
+            const auto byte_keep = static_cast<std::uint8_t>(keep);
+            for (int c = 0; c < 3; ++c) {
+                std::uint8_t& out = colours[s * 3 + static_cast<std::size_t>(c)];
+                out = static_cast<std::uint8_t>((colour[c] & byte_keep) | (out & ~byte_keep));
+            }
         }
-        write_samples(target.colours(x, y), passed, splat.colour);
+    };
+    // The sample of the own pixel nearest the centre, for a disc that covers none of them.
+    const auto nearest_sample = [&](double dx, double dy) {
+        std::size_t nearest = 0;
+        double nearest_distance = 1e300;
+        for (std::size_t s = 0; s < count; ++s) {
+            const double sx = dx + offsets[s].x, sy = dy + offsets[s].y;
+            if (sx * sx + sy * sy < nearest_distance) nearest_distance = sx * sx + sy * sy, nearest = s;
+        }
+        return std::uint32_t{1} << nearest;
     };
     for (int y = y_first; y <= y_last; ++y) {
         for (int x = x_first; x <= x_last; ++x) {
             const double dx = x - static_cast<double>(splat.x), dy = y - static_cast<double>(splat.y);
             std::uint32_t covered = 0;
-            std::size_t nearest_sample = 0;
-            double nearest_distance = 1e300;
             for (std::size_t s = 0; s < count; ++s) {
-                const double sx = dx + offsets[s].x, sy = dy + offsets[s].y;
-                if (on_disc(sx, sy, r2)) covered |= std::uint32_t{1} << s;
-                if (sx * sx + sy * sy < nearest_distance) nearest_distance = sx * sx + sy * sy, nearest_sample = s;
+                if (on_disc(dx + offsets[s].x, dy + offsets[s].y, r2)) covered |= std::uint32_t{1} << s;
             }
-            if (covered == 0 && x == own_x && y == own_y) covered = std::uint32_t{1} << nearest_sample;
+            if (covered == 0 && x == own_x && y == own_y) covered = nearest_sample(dx, dy);
             if (covered != 0) draw_pixel(x, y, covered);
         }
     }

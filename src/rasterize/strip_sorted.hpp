@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 // Small items (splats) binned like ItemBins, but copied into strip order once a batch is
@@ -48,10 +49,10 @@ public:
         }
     }
 
-    template <typename Draw>
-    void for_each_in(int s, Draw draw) const {
+    // Strip s's items, in the order they were added.
+    [[nodiscard]] std::span<const Item> in(int s) const noexcept {
         const auto strip = static_cast<std::size_t>(s);
-        for (std::uint32_t k = starts_[strip]; k < starts_[strip + 1]; ++k) draw(sorted_[k]);
+        return std::span<const Item>(sorted_).subspan(starts_[strip], starts_[strip + 1] - starts_[strip]);
     }
 
 private:

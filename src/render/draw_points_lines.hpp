@@ -55,6 +55,25 @@ inline std::size_t point_batch(std::size_t items, int threads) noexcept {
 constexpr std::size_t kSplatBatch = 16384;
 constexpr int kSplatBatchesPerThread = 8;
 
+// Splats whose pixels are fetched ahead of drawing: enough to cover a wait on memory.
+constexpr std::size_t kSplatsAhead = 16;
+
+// Asks the cache for the pixel holding a splat's centre, where its samples (and depth) lie.
+inline void prefetch_splat(const PointTargets& target, const Splat& splat, const PixelRect& strip) noexcept {
+    const int x = std::clamp(pixel_holding(splat.x), 0, strip.width - 1);
+    const int y = std::clamp(pixel_holding(splat.y), strip.y, strip.y + strip.height - 1);
+    if (target.samples != nullptr) {
+        // A small splat reaches the rows either side of its own.
+        for (int row = std::max(y - 1, strip.y); row <= std::min(y + 1, strip.y + strip.height - 1); ++row)
+            target.samples->prefetch(x, row);
+    } else {
+        __builtin_prefetch(
+            target.framebuffer->pixels() +
+            (static_cast<std::size_t>(y) * static_cast<std::size_t>(strip.width) + static_cast<std::size_t>(x)) * 3);
+        if (target.depth != nullptr) __builtin_prefetch(target.depth->row(y) + x);
+    }
+}
+
 // The splat diameter for `source`'s points: the scene's, or sized from their box on screen.
 template <typename Camera>
 double point_size(const PointProjection<Camera>& projection, const PointsAndLines& style, const Mesh& source,
@@ -181,14 +200,16 @@ void draw_points_lines(const Camera& camera, const PointsAndLines& style, const 
         team.for_each(layout.count(), [&](int s) {
             const PixelRect strip = layout.strip(s);
             for (std::size_t b = 0; b < count; ++b) {
-                round[b].for_each_in(s, [&](const Splat& splat) {
+                const std::span<const Splat> splats = round[b].in(s);
+                for (std::size_t k = 0; k < splats.size(); ++k) {
+                    if (k + kSplatsAhead < splats.size()) prefetch_splat(target, splats[k + kSplatsAhead], strip);
                     if (sampled) {
-                        draw_splat_samples(*target.samples, target.depth_test, splat, splat_radius, strip,
+                        draw_splat_samples(*target.samples, target.depth_test, splats[k], splat_radius, strip,
                                            target.offsets);
                     } else {
-                        draw_splat(*target.framebuffer, target.depth, splat, splat_radius, strip);
+                        draw_splat(*target.framebuffer, target.depth, splats[k], splat_radius, strip);
                     }
-                });
+                }
             }
         });
     }

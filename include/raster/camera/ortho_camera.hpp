@@ -22,7 +22,13 @@ public:
                                              glm::vec3 target = {0.0F, 0.0F, 0.0F}, glm::vec3 up = {0.0F, 1.0F, 0.0F});
 
     // View coordinates: x right, y up, z the distance in front of the eye along direction().
-    [[nodiscard]] glm::dvec3 view_from_world(glm::vec3 world) const noexcept;
+    // Inline: every vertex and every point of a cloud passes through it. Written out so that a
+    // zero component contributes exactly nothing: the default camera keeps world x and y bit for bit.
+    [[nodiscard]] glm::dvec3 view_from_world(glm::vec3 world) const noexcept {
+        const glm::dvec3 d = glm::dvec3(world) - eye_;
+        return {right_.x * d.x + right_.y * d.y + right_.z * d.z, up_.x * d.x + up_.y * d.y + up_.z * d.z,
+                forward_.x * d.x + forward_.y * d.y + forward_.z * d.z};
+    }
     // The world point at a screen position and view depth: the inverse of the two maps above.
     [[nodiscard]] glm::dvec3 world_from_screen(glm::dvec2 screen, double depth) const noexcept {
         // A one-pixel side has scale 0: every screen position there is the view's centre.

@@ -38,12 +38,19 @@ public:
                                                         Lens lens);
 
     [[nodiscard]] glm::dvec3 view_from_world(glm::vec3 world) const noexcept { return view_.view_from_world(world); }
-    [[nodiscard]] glm::dvec4 clip_from_view(glm::dvec3 view) const noexcept;
+    // Inline, as view_from_world is: each point of a cloud is projected on its own.
+    [[nodiscard]] glm::dvec4 clip_from_view(glm::dvec3 view) const noexcept {
+        const double depth_scale = lens_.far / (lens_.far - lens_.near);
+        return {view.x * x_scale_, view.y * y_scale_, (view.z - lens_.near) * depth_scale, view.z};
+    }
     [[nodiscard]] glm::dvec4 clip_from_world(glm::vec3 world) const noexcept {
         return clip_from_view(view_from_world(world));
     }
     // Continuous pixel coordinates of a clip-space point in front of the eye (w > 0).
-    [[nodiscard]] glm::dvec2 screen_from_clip(glm::dvec4 clip) const noexcept;
+    [[nodiscard]] glm::dvec2 screen_from_clip(glm::dvec4 clip) const noexcept {
+        const double x_ndc = clip.x / clip.w, y_ndc = clip.y / clip.w;
+        return {(x_ndc + 1.0) * width_ / 2.0 - 0.5 - offset_.x, (1.0 - y_ndc) * height_ / 2.0 - 0.5 - offset_.y};
+    }
 
     [[nodiscard]] glm::vec3 eye() const noexcept { return view_.eye(); }
     [[nodiscard]] glm::vec3 direction() const noexcept { return view_.direction(); }

@@ -18,15 +18,6 @@
 namespace raster::detail {
 namespace {
 
-// The fewest bytes one element can take, as ply_counts_problem counts them: its fixed properties
-// and lists' lengths in binary, two characters a property in ASCII; at least one.
-std::uint64_t least_bytes(const PlyElement& element, bool ascii) {
-    std::uint64_t bytes = 0;
-    for (const PlyProperty& p : element.properties)
-        bytes += ascii ? 2U : static_cast<std::uint64_t>(ply_type_bytes(p.list ? p.count_type : p.type));
-    return std::max<std::uint64_t>(bytes, 1);
-}
-
 // A number the file wrote, for a message: shortest form, whole numbers without a point, NaN as nan.
 std::string number_text(double value) {
     std::array<char, 32> text{};
@@ -58,7 +49,7 @@ public:
     PlyBody read() {
         bool vertices_seen = false;
         for (const PlyElement& element : layout_.elements) {
-            if (element.count > bytes_.left() / least_bytes(element, ascii_)) {
+            if (element.count > bytes_.left() / ply_least_bytes(element, ascii_)) {
                 throw std::runtime_error(name_ + ": the PLY header declares " + std::to_string(element.count) + " '" +
                                          element.name + "' elements, more than the " + std::to_string(bytes_.left()) +
                                          " bytes left can hold: the file is cut short, or its header is wrong");

@@ -4,7 +4,9 @@
 #include "io/ply/ply_bytes.hpp"
 #include "io/ply/ply_layout.hpp"
 #include "io/ply/ply_model.hpp"
+#include "io/ply/ply_reading.hpp"
 #include "io/ply_header.hpp"
+#include "io/reader_process.hpp"
 
 #include <raster/io/input_file.hpp>
 #include <raster/io/model_file.hpp>
@@ -18,9 +20,12 @@
 namespace raster {
 namespace {
 
+// Checks the header's counts before anything is read: throws when they need too much memory.
+using Admission = std::function<void(const detail::PlyLayout&, std::uint64_t body_bytes)>;
+
 // The model in `bytes`, or what `assimp` reads for a file that needs assimp's reader.
 Model ply_model(detail::PlyBytes& bytes, const std::string& name, const ObjOptions& options, Model model,
-                const std::function<Model()>& assimp) {
+                const std::function<Model()>& assimp, const Admission& admit = {}) {
     const std::span<const std::uint8_t> head = bytes.ahead(detail::kMaxPlyHeaderBytes);
     if (const std::string problem = detail::ply_header_problem(head); !problem.empty())
         throw std::runtime_error(name + ": " + problem);
@@ -32,13 +37,14 @@ Model ply_model(detail::PlyBytes& bytes, const std::string& name, const ObjOptio
     }
     if (layout.needs_assimp) return assimp();
     bytes.advance(layout.header_bytes);
+    if (admit) admit(layout, bytes.left());
     detail::model_from_ply(detail::read_ply_body(layout, bytes, name), name, options, model);
     return model;
 }
 
-}  // namespace
-
-Model read_ply(const std::filesystem::path& path, const ObjOptions& options) {
+// Read by raster's own reader, or handed to `assimp`; `admit` sees the header first.
+Model read_ply_file(const std::filesystem::path& path, const ObjOptions& options, const std::function<Model()>& assimp,
+                    const Admission& admit) {
     const std::string name = printable(path.string());
     InputRules rules;
     rules.role = "model";
@@ -49,13 +55,42 @@ Model read_ply(const std::filesystem::path& path, const ObjOptions& options) {
         Model model;
         model.sources.push_back(file.record());
         detail::PlyBytes bytes([&file](std::span<std::uint8_t> into) { return file.read_some(into); }, file.size());
-        return ply_model(bytes, name, options, std::move(model), [&] { return read_scene_file(path, options); });
+        return ply_model(bytes, name, options, std::move(model), assimp, admit);
     } catch (const std::runtime_error& problem) {
         const std::string what = problem.what();
         if (what.starts_with(name + ":")) throw;
         throw std::runtime_error(name + ": " + what);  // InputFile's reasons do not name the file
     }
 }
+
+}  // namespace
+
+Model read_ply(const std::filesystem::path& path, const ObjOptions& options) {
+    return read_ply_file(path, options, [&] { return read_scene_file(path, options); }, {});
+}
+
+namespace detail {
+
+std::uint64_t least_ply_memory(const PlyLayout& layout, std::uint64_t body_bytes) noexcept {
+    std::uint64_t bytes = 0;
+    for (const PlyElement& element : layout.elements) {
+        const std::uint64_t each = element.name == "vertex" ? 24 : element.name == "face" ? 36 : 0;
+        const std::uint64_t most = body_bytes / ply_least_bytes(element, layout.encoding == PlyEncoding::ascii);
+        bytes += std::min(element.count, most) * each;
+    }
+    return bytes;
+}
+
+Model read_ply_here(const std::filesystem::path& path, const ObjOptions& options,
+                    const std::function<Model()>& elsewhere) {
+    const std::string name = printable(path.string());
+    return read_ply_file(path, options, elsewhere, [&](const PlyLayout& layout, std::uint64_t body_bytes) {
+        if (least_ply_memory(layout, body_bytes) > memory_in_force(options.limits))
+            throw std::runtime_error(memory_refusal(name, "PLY", options.limits));
+    });
+}
+
+}  // namespace detail
 
 Model parse_ply(std::span<const std::uint8_t> bytes, const ObjOptions& options) {
     std::size_t at = 0;

@@ -113,4 +113,11 @@ PlyLayout ply_layout(std::span<const std::uint8_t> head) {
     return layout;
 }
 
+std::uint64_t ply_least_bytes(const PlyElement& element, bool ascii) noexcept {
+    std::uint64_t bytes = 0;
+    for (const PlyProperty& p : element.properties)
+        bytes += ascii ? 2U : static_cast<std::uint64_t>(ply_type_bytes(p.list ? p.count_type : p.type));
+    return std::max<std::uint64_t>(bytes, 1);
+}
+
 }  // namespace raster::detail

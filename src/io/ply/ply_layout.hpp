@@ -40,6 +40,10 @@ struct PlyLayout {
 [[nodiscard]] bool ply_type_signed(PlyType type) noexcept;
 [[nodiscard]] bool ply_type_integer(PlyType type) noexcept;
 
+// The fewest bytes one element can take, as ply_counts_problem counts them: its fixed properties
+// and lists' lengths in binary, two characters a property in ASCII; at least one.
+[[nodiscard]] std::uint64_t ply_least_bytes(const PlyElement& element, bool ascii) noexcept;
+
 // The layout of a header that ply_header_problem passed; throws std::runtime_error for an element
 // declared twice, which assimp refused too.
 [[nodiscard]] PlyLayout ply_layout(std::span<const std::uint8_t> head);
