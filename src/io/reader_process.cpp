@@ -42,8 +42,9 @@ std::uint64_t default_max_memory() noexcept {
 namespace detail {
 namespace {
 
-// What the child sends first: a model, a reason it could not read one, or that memory ran out.
-enum class Outcome : std::uint8_t { model = 'M', refused = 'E', out_of_memory = 'N' };
+// What the child sends first: a model (in the shared memory, or in the message where there is
+// none), a reason it could not read one, or that memory ran out.
+enum class Outcome : std::uint8_t { model = 'M', model_in_message = 'P', refused = 'E', out_of_memory = 'N' };
 
 // Set by the child's new-handler: assimp turns a failed allocation into "could not read", so
 // the child remembers that memory ran out. Static because a new-handler reaches nothing else.
@@ -113,11 +114,18 @@ void write_all(int descriptor, const std::vector<std::uint8_t>& bytes) {
         // The model goes into the shared memory, within this process's address space as a message would.
         const std::size_t size = model_wire_bytes(model);
         if (size > max_memory) throw std::bad_alloc();
-        const SharedMapping into = SharedMapping::for_writing(shared, size);
-        WireWriter wire(into.bytes());
-        write_model_wire(model, wire);
-        message.push_back(static_cast<std::uint8_t>(Outcome::model));
-        WireWriter(message).value(static_cast<std::uint64_t>(size));
+        if (shared.descriptor() < 0) {  // no shared memory: the model follows in the message
+            message.push_back(static_cast<std::uint8_t>(Outcome::model_in_message));
+            message.resize(message.size() + size);
+            WireWriter wire(std::span<std::uint8_t>(message).last(size));
+            write_model_wire(model, wire);
+        } else {
+            const SharedMapping into = SharedMapping::for_writing(shared, size);
+            WireWriter wire(into.bytes());
+            write_model_wire(model, wire);
+            message.push_back(static_cast<std::uint8_t>(Outcome::model));
+            WireWriter(message).value(static_cast<std::uint64_t>(size));
+        }
     } catch (const std::bad_alloc&) {
         message.assign(sizeof(std::uint64_t) + 1, static_cast<std::uint8_t>(Outcome::out_of_memory));
     } catch (const std::exception& problem) {
@@ -150,14 +158,14 @@ std::string signal_name(int signal) {
 
 }  // namespace
 
-ChildOutcome run_reader_child(const std::function<Model()>& read, const ReaderLimits& limits) {
+ChildOutcome run_reader_child(const std::function<Model()>& read, const ReaderLimits& limits, ModelPassage passage) {
     const auto [max_memory, max_seconds] = limits_in_force(limits);
     ChildOutcome outcome;
     try {
-        outcome.shared = SharedBytes::create(max_memory);  // what is not written takes no memory
-    } catch (const std::runtime_error& problem) {
-        outcome.start_error = problem.what();
-        return outcome;
+        // What is not written takes no memory.
+        if (passage == ModelPassage::shared_memory) outcome.shared = SharedBytes::create(max_memory);
+    } catch (const std::runtime_error&) {
+        // Refused (no memfd_create, a sandbox's EPERM, no descriptors left): the pipe carries the model.
     }
     int pipe_ends[2];
     if (::pipe2(pipe_ends, O_CLOEXEC) != 0) {
@@ -257,9 +265,11 @@ Model model_from_outcome(const ChildOutcome& outcome, const std::string& name, c
     const std::span<const std::uint8_t> rest = std::span<const std::uint8_t>(received).subspan(1);
     if (kind == Outcome::out_of_memory) throw std::runtime_error(memory_refusal);
     if (kind == Outcome::refused) throw std::runtime_error(std::string(rest.begin(), rest.end()));
-    if (kind != Outcome::model)
+    if (kind != Outcome::model && kind != Outcome::model_in_message)
         throw std::runtime_error(name + ": the " + reader + " reader sent nothing raster understands");
     try {
+        // Its length within --max-memory was checked as it arrived.
+        if (kind == Outcome::model_in_message) return model_from_wire(rest);
         // The message says how many bytes of the shared memory hold the model.
         if (rest.size() != sizeof(std::uint64_t)) WireReader::broken();
         const auto size = WireReader(rest).value<std::uint64_t>();

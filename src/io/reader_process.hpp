@@ -5,6 +5,7 @@
 
 #include "io/shared_bytes.hpp"
 
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
@@ -29,8 +30,13 @@ struct ChildOutcome {
     std::string start_error;  // why no child could be started, or ""
 };
 
+// How the model comes back: in shared memory where the system makes one, else in the pipe's message
+// (doc/conventions.md#reader-process); `pipe` acts out a system that refuses memfd_create.
+enum class ModelPassage : std::uint8_t { shared_memory, pipe };
+
 // Forks a child that runs `read` under `limits` and collects what it sends.
-[[nodiscard]] ChildOutcome run_reader_child(const std::function<Model()>& read, const ReaderLimits& limits);
+[[nodiscard]] ChildOutcome run_reader_child(const std::function<Model()>& read, const ReaderLimits& limits,
+                                            ModelPassage passage = ModelPassage::shared_memory);
 
 // The model a child sent, or the one line that says why there is none.
 [[nodiscard]] Model model_from_outcome(const ChildOutcome& outcome, const std::string& name, const std::string& reader,

@@ -53,7 +53,8 @@ std::size_t draw_shaded(const SceneObject& object, std::span<const DirectionalLi
     if (const auto* pbr = std::get_if<MetallicRoughness>(&object.material)) {
         // Shaded per pixel whatever the method asks, but flat takes the facet's normal; unlit draws the base colour.
         if (object.shading == ShadingMethod::unlit) {
-            const DiffuseSource base{pbr->usable().base_colour, pbr->base_colour_map.get(), object.sampler};
+            const DiffuseSource base{pbr->usable().base_colour, pbr->base_colour_map.get(), object.sampler,
+                                     pbr->base_colour_transform};
             if (coloured) return tinted(TintedUnlitShader{base});
             return draw(UnlitShader{base});
         }

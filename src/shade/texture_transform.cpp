@@ -1,6 +1,7 @@
 #include <raster/shade/texture_transform.hpp>
 
 #include <cmath>
+#include <cstddef>
 
 namespace raster {
 
@@ -19,6 +20,18 @@ MovedUv moved_uv(const TextureTransform& transform, glm::vec2 uv, const UvFootpr
         return glm::vec2(turned.x, -turned.y);
     };
     return {{gltf.x, 1.0F - gltf.y}, {step(footprint.per_pixel_x), step(footprint.per_pixel_y)}};
+}
+
+LaneUvs moved_lanes(const TextureTransform& transform, const LaneUvs& uvs, int count) noexcept {
+    LaneUvs out = uvs;
+    for (std::size_t i = 0; i < static_cast<std::size_t>(count); ++i) {
+        const MovedUv m = moved_uv(transform, {uvs.u[i], uvs.v[i]},
+                                   {{uvs.u_per_x[i], uvs.v_per_x[i]}, {uvs.u_per_y[i], uvs.v_per_y[i]}});
+        out.u[i] = m.uv.x, out.v[i] = m.uv.y;
+        out.u_per_x[i] = m.footprint.per_pixel_x.x, out.v_per_x[i] = m.footprint.per_pixel_x.y;
+        out.u_per_y[i] = m.footprint.per_pixel_y.x, out.v_per_y[i] = m.footprint.per_pixel_y.y;
+    }
+    return out;
 }
 
 }  // namespace raster

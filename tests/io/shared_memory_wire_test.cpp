@@ -118,3 +118,26 @@ TEST(SharedMemoryWire, TheServicePassesEachModelsSharedMemoryOn) {
         EXPECT_EQ(wire_of(back), expected);
     }
 }
+
+// A system that refuses memfd_create (ENOSYS, a sandbox's EPERM, EMFILE): the model comes in the pipe's
+// message instead, the same bytes, and the memory limit bounds it as it bounds the shared memory.
+TEST(SharedMemoryWire, WhereSharedMemoryIsRefusedTheModelComesThroughThePipeIdentical) {
+    const raster::Model model = big_model(300'000);
+    const raster::detail::ChildOutcome outcome =
+        raster::detail::run_reader_child([&] { return model; }, {}, raster::detail::ModelPassage::pipe);
+    EXPECT_LT(outcome.shared.descriptor(), 0);
+    EXPECT_EQ(wire_of(raster::detail::model_from_outcome(outcome, "m.ply", "PLY", {})), wire_of(model));
+    raster::ReaderLimits small;
+    small.max_memory = std::uint64_t{1} << 20;
+    const std::string refusal = [&] {
+        try {
+            (void)raster::detail::model_from_outcome(
+                raster::detail::run_reader_child([&] { return model; }, small, raster::detail::ModelPassage::pipe),
+                "m.ply", "PLY", small);
+        } catch (const std::runtime_error& problem) {
+            return std::string(problem.what());
+        }
+        return std::string();
+    }();
+    EXPECT_EQ(refusal, "m.ply: the PLY reader needed more than 1 MiB of memory; raise --max-memory to allow it");
+}

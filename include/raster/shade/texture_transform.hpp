@@ -29,4 +29,7 @@ struct MovedUv {
 // The identity returns `uv` and `footprint` as they are, bit for bit.
 [[nodiscard]] MovedUv moved_uv(const TextureTransform& transform, glm::vec2 uv, const UvFootprint& footprint) noexcept;
 
+// moved_uv for the first `count` lanes of `uvs`.
+[[nodiscard]] LaneUvs moved_lanes(const TextureTransform& transform, const LaneUvs& uvs, int count) noexcept;
+
 }  // namespace raster

@@ -4,6 +4,7 @@
 #include <raster/shade/linear_lighting.hpp>
 #include <raster/shade/shaders.hpp>
 #include <raster/shade/texture.hpp>
+#include <raster/shade/texture_transform.hpp>
 
 #include <span>
 #include <glm/vec2.hpp>
@@ -38,18 +39,25 @@ struct Tint<false> {
     [[nodiscard]] static LinearRgb tinted(LinearRgb albedo) noexcept { return albedo; }
 };
 
-// The diffuse colour at a texture coordinate: the material's, times the texture's if any.
+// The diffuse colour at a texture coordinate: the material's, times the texture's if any, read
+// where `transform` moves the coordinate (doc/conventions.md#texture-transform).
 struct DiffuseSource {
     LinearRgb colour;
     const Texture* texture = nullptr;
     Sampler sampler{};
+    TextureTransform transform{};
 
     [[nodiscard]] LinearRgb at(glm::vec2 uv, const UvFootprint& footprint) const noexcept {
-        return texture == nullptr ? colour : colour * texture->sample(uv, footprint, sampler);
+        if (texture == nullptr) return colour;
+        if (transform.identity()) return colour * texture->sample(uv, footprint, sampler);
+        const MovedUv moved = moved_uv(transform, uv, footprint);
+        return colour * texture->sample(moved.uv, moved.footprint, sampler);
     }
     // at() for the first `count` lanes of `uvs`.
     void at_lanes(const LaneUvs& uvs, LaneRgb& out, int count) const noexcept {
-        if (texture != nullptr) texture->sample_lanes(uvs, sampler, out, count);
+        if (texture != nullptr && transform.identity()) texture->sample_lanes(uvs, sampler, out, count);
+        if (texture != nullptr && !transform.identity())
+            texture->sample_lanes(moved_lanes(transform, uvs, count), sampler, out, count);
         for (std::size_t i = 0; i < static_cast<std::size_t>(count); ++i) {
             const LinearRgb read = texture == nullptr ? colour : colour * LinearRgb{out.r[i], out.g[i], out.b[i]};
             put_lane(out, i, read);

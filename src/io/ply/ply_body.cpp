@@ -30,16 +30,6 @@ bool fixed_size(const PlyElement& element) {
                         [](const PlyProperty& p) { return p.list; });
 }
 
-// The list of a face element that holds its corners, as assimp finds it (the last so named).
-int corner_list(const PlyElement& element) {
-    int found = -1;
-    for (std::size_t k = 0; k < element.properties.size(); ++k) {
-        const PlyProperty& p = element.properties[k];
-        if (p.list && (p.name == "vertex_indices" || p.name == "vertex_index")) found = static_cast<int>(k);
-    }
-    return found;
-}
-
 class BodyReader {
 public:
     BodyReader(const PlyLayout& layout, PlyBytes& bytes, const std::string& name)
@@ -55,7 +45,7 @@ public:
                                          " bytes left can hold: the file is cut short, or its header is wrong");
             }
             const bool vertices = element.name == "vertex";
-            const int corners = element.name == "face" ? corner_list(element) : -1;
+            const int corners = element.name == "face" ? ply_corner_list(element) : -1;
             if (element.name == "face" && element.count > 0 && !vertices_seen)
                 throw std::runtime_error(name_ +
                                          ": the PLY's faces come before its vertices, which raster does not read");
@@ -77,7 +67,7 @@ private:
     bool faces_follow(const PlyElement& vertices) const {
         bool after = false;
         for (const PlyElement& element : layout_.elements) {
-            if (after && element.name == "face" && element.count > 0 && corner_list(element) >= 0) return true;
+            if (after && element.name == "face" && element.count > 0 && ply_corner_list(element) >= 0) return true;
             after = after || &element == &vertices;
         }
         return false;

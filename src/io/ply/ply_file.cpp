@@ -5,6 +5,7 @@
 #include "io/ply/ply_layout.hpp"
 #include "io/ply/ply_model.hpp"
 #include "io/ply/ply_reading.hpp"
+#include "io/ply/ply_unread.hpp"
 #include "io/ply_header.hpp"
 #include "io/reader_process.hpp"
 
@@ -16,6 +17,7 @@
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace raster {
 namespace {
@@ -35,10 +37,18 @@ Model ply_model(detail::PlyBytes& bytes, const std::string& name, const ObjOptio
     } catch (const std::runtime_error& problem) {
         throw std::runtime_error(name + ": " + problem.what());
     }
-    if (layout.needs_assimp) return assimp();
+    // Named once, by this reader, whichever reads the file: scene files' reader knows nothing of PLY.
+    const std::vector<std::string> unread = detail::ply_unread_warnings(layout, name, layout.needs_assimp);
+    if (layout.needs_assimp) {
+        Model theirs = assimp();
+        // Read here (admitted), the fallback is a child whose own pass through this function named them.
+        if (!admit) theirs.warnings.insert(theirs.warnings.end(), unread.begin(), unread.end());
+        return theirs;
+    }
     bytes.advance(layout.header_bytes);
     if (admit) admit(layout, bytes.left());
     detail::model_from_ply(detail::read_ply_body(layout, bytes, name), name, options, model);
+    model.warnings.insert(model.warnings.end(), unread.begin(), unread.end());
     return model;
 }
 

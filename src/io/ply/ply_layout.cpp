@@ -67,6 +67,15 @@ bool ply_type_signed(PlyType type) noexcept {
 
 bool ply_type_integer(PlyType type) noexcept { return type != PlyType::float32 && type != PlyType::float64; }
 
+int ply_corner_list(const PlyElement& element) noexcept {
+    int found = -1;
+    for (std::size_t k = 0; k < element.properties.size(); ++k) {
+        const PlyProperty& p = element.properties[k];
+        if (p.list && (p.name == "vertex_indices" || p.name == "vertex_index")) found = static_cast<int>(k);
+    }
+    return found;
+}
+
 PlyLayout ply_layout(std::span<const std::uint8_t> head) {
     const std::string_view text(reinterpret_cast<const char*>(head.data()), head.size());
     PlyLayout layout;

@@ -39,6 +39,8 @@ struct PlyLayout {
 [[nodiscard]] int ply_type_bytes(PlyType type) noexcept;
 [[nodiscard]] bool ply_type_signed(PlyType type) noexcept;
 [[nodiscard]] bool ply_type_integer(PlyType type) noexcept;
+// The list of a face element that holds its corners, as assimp finds it (the last so named); -1 for none.
+[[nodiscard]] int ply_corner_list(const PlyElement& element) noexcept;
 
 // The fewest bytes one element can take, as ply_counts_problem counts them: its fixed properties
 // and lists' lengths in binary, two characters a property in ASCII; at least one.

@@ -1,5 +1,6 @@
 #include "io/ply/vertex_slots.hpp"
 
+#include <algorithm>
 #include <utility>
 
 namespace raster::detail {
@@ -32,6 +33,10 @@ VertexSlots::VertexSlots(const PlyElement& element, bool keep_places) : keep_pla
     uvs_ = any(u, count);
     for (std::size_t b = 0; b < linear_bytes_.size(); ++b)
         linear_bytes_[b] = static_cast<float>(linear_from_srgb_channel(static_cast<float>(b) / 255.0F));
+}
+
+bool VertexSlots::reads(std::string_view name) noexcept {
+    return std::any_of(kNames.begin(), kNames.end(), [&](const auto& known) { return known.first == name; });
 }
 
 void VertexSlots::reserve(PlyBody& body, std::uint64_t vertices) const {

@@ -25,6 +25,8 @@ public:
     // `keep_places`: a vertex whose position is not finite stays, as NaN, so that faces count right.
     VertexSlots(const PlyElement& element, bool keep_places);
 
+    // Whether a vertex property of this name (not a list) is one raster reads.
+    [[nodiscard]] static bool reads(std::string_view name) noexcept;
     // Whether any property is one raster reads (assimp reads no vertex of an element without one).
     [[nodiscard]] bool readable() const noexcept { return any(x, count); }
     void reserve(PlyBody& body, std::uint64_t vertices) const;
