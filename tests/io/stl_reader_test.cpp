@@ -124,6 +124,8 @@ TEST(StlReader, EveryAssimpTestModelReadsAsAssimpReadsIt) {
         const bool ascii = test_support::read_text(entry.path()).starts_with("solid");
         if (our_error.empty() && their_error.empty()) {
             expect_same(ours, theirs, entry.path().string(), !ascii);
+            // Attribute words that are not colours were dropped silently by assimp's path; raster says so.
+            std::erase_if(ours.warnings, [](const std::string& w) { return w.find("attribute bits") != w.npos; });
             EXPECT_EQ(ours.warnings, theirs.warnings);
         }
         ++compared;

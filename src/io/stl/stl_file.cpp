@@ -39,7 +39,8 @@ Model stl_model(detail::PlyBytes& bytes, std::uint64_t size, const std::string& 
                   std::to_string(detail::kStlHeaderBytes + detail::kStlRecordBytes * std::uint64_t{claimed}) +
                   " bytes, and it has " + std::to_string(size);
     if (!says_solid(head)) throw std::runtime_error(name + ": not an STL model: not 'solid' text, and " + as_binary);
-    if (std::find(head.begin(), head.end(), std::uint8_t{0}) != head.end())
+    const std::span<const std::uint8_t> first = head.first(std::min<std::size_t>(head.size(), 512));
+    if (std::find(first.begin(), first.end(), std::uint8_t{0}) != first.end())  // later, StlWords names the line
         throw std::runtime_error(name + ": a binary STL whose count lies (" + as_binary + ")");
     return detail::read_ascii_stl(bytes, name, options, std::move(model));
 }
