@@ -84,7 +84,7 @@ fuzz)
     seconds="${2:-60}"
     install_missing "${base_packages[@]}" clang libclang-rt-14-dev
     build fuzz
-    for target in fuzz_raster fuzz_mesh fuzz_model fuzz_ply fuzz_scene; do
+    for target in fuzz_raster fuzz_mesh fuzz_model fuzz_ply fuzz_stl fuzz_scene; do
         mkdir -p "build/fuzz/corpus/$target"
         # New finds go to the first folder; the committed seeds (lab/seeds/) are read, never written.
         seeds=()

@@ -61,6 +61,7 @@
 #include <raster/io/png.hpp>
 #include <raster/io/reader_limits.hpp>
 #include <raster/io/reader_service.hpp>
+#include <raster/io/stl_file.hpp>
 #include <raster/io/texture_file.hpp>
 #include <raster/io/webp.hpp>
 #include <raster/io/webp_parts.hpp>

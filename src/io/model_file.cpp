@@ -9,6 +9,7 @@
 #include <raster/io/input_file.hpp>
 #include <raster/io/ply_file.hpp>
 #include <raster/io/reader_service.hpp>
+#include <raster/io/stl_file.hpp>
 
 #include <stdexcept>
 #include <string>
@@ -50,6 +51,7 @@ Model read_model_here(const std::filesystem::path& path, const ObjOptions& optio
     if (format == ModelFormat::obj) return read_obj(path, options);
     if (format == ModelFormat::ply)
         return read_ply(path, options);  // raster's own reader (doc/conventions.md#ply-reader)
+    if (format == ModelFormat::stl) return read_stl(path, options);  // and STL's (doc/conventions.md#stl-reader)
     return read_scene_file(path, options);
 }
 
