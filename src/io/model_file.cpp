@@ -53,12 +53,21 @@ bool has_model_ending(const std::filesystem::path& path) {
            detail::other_format(ending) != nullptr;
 }
 
-Model read_model(const std::filesystem::path& path, const ObjOptions& options) {
+Model read_model(const std::filesystem::path& path, const ObjOptions& options, Spent* spent) {
     const std::string reader = detail::reader_name(path);  // an unknown ending is refused here, before any fork
-    if (options.limits.separate_process && options.limits.service != nullptr)
-        return options.limits.service->read(path, options);
-    return detail::read_in_child([&] { return detail::read_model_here(path, options); }, printable(path.string()),
-                                 reader, options.limits);
+    const bool apart = options.limits.separate_process;
+    // In a child, this thread's own time is the copy back (a batch reads while it draws on others).
+    Stopwatch clock(apart ? Counted::thread : Counted::process);
+    double child = 0.0;
+    Model model = apart && options.limits.service != nullptr
+                      ? options.limits.service->read(path, options, &child)
+                      : detail::read_in_child([&] { return detail::read_model_here(path, options); },
+                                              printable(path.string()), reader, options.limits, &child);
+    if (spent != nullptr) {
+        *spent = clock.lap();
+        spent->processor += child;
+    }
+    return model;
 }
 
 }  // namespace raster

@@ -36,7 +36,9 @@ struct ChildOutcome {
 [[nodiscard]] Model model_from_outcome(const ChildOutcome& outcome, const std::string& name, const std::string& reader,
                                        const ReaderLimits& limits);
 
+// `processor_seconds`, when given, receives the child's processor time.
 [[nodiscard]] Model read_in_child(const std::function<Model()>& read, const std::string& name,
-                                  const std::string& reader, const ReaderLimits& limits);
+                                  const std::string& reader, const ReaderLimits& limits,
+                                  double* processor_seconds = nullptr);
 
 }  // namespace raster::detail
