@@ -4,6 +4,7 @@
 
 #include <raster/io/model_file.hpp>
 #include <raster/io/texture_file.hpp>
+#include <raster/platform/stopwatch.hpp>
 
 #include <cstdio>
 #include <iostream>
@@ -23,8 +24,9 @@ std::string seconds_text(double seconds) {
 
 LoadedModel load_model(const std::string& path, const RenderPlan& plan) {
     const auto start = std::chrono::steady_clock::now();
-    raster::Model model = raster::read_model(path, plan.obj);
     LoadedModel loaded;
+    raster::Model model = raster::read_model(path, plan.obj, &loaded.times.read.spent);
+    raster::Stopwatch preparing;
     loaded.inputs = model.sources;
     loaded.inputs.insert(loaded.inputs.end(), plan.texture_inputs.begin(), plan.texture_inputs.end());
     loaded.warnings = model.warnings;
@@ -45,13 +47,16 @@ LoadedModel load_model(const std::string& path, const RenderPlan& plan) {
     if (points > 0) loaded.contents += (loaded.contents.empty() ? "" : ", ") + std::to_string(points) + " points";
     if (lines > 0) loaded.contents += (loaded.contents.empty() ? "" : ", ") + std::to_string(lines) + " lines";
     loaded.model = std::make_shared<const raster::Model>(std::move(model));
+    loaded.times.prepare.spent = preparing.lap();
     loaded.seconds = seconds_since(start);
     return loaded;
 }
 
 std::function<FinishedPicture()> render_model(const CLI::App& app, ExportOptions options, const LoadedModel& loaded,
-                                              const RenderPlan& plan, raster::Renderer& renderer) {
+                                              const RenderPlan& plan, raster::Renderer& renderer,
+                                              raster::StageTimes* times) {
     const auto start = std::chrono::steady_clock::now();
+    raster::Stopwatch preparing;
     options.inputs = loaded.inputs;
     if (!options.quiet) {
         for (const std::string& warning : loaded.warnings)
@@ -65,8 +70,9 @@ std::function<FinishedPicture()> render_model(const CLI::App& app, ExportOptions
         view = raster::through_camera(view, loaded.model->cameras[index], *loaded.model);
     }
     const raster::ModelStage stage(loaded.model, view, options.width, options.height);
+    if (times != nullptr) times->prepare.spent += preparing.lap();
     const auto draw = [&](raster::Framebuffer& frame, double turn, std::vector<std::uint8_t>& alpha) {
-        stage.render(frame, renderer, turn);
+        stage.render(frame, renderer, turn, times);
         if (plan.view.transparent) alpha = renderer.coverage();
     };
     const std::string tail = ", " + loaded.contents + ", ";
@@ -81,10 +87,22 @@ std::function<FinishedPicture()> render_model(const CLI::App& app, ExportOptions
             return done;
         };
     }
+    // The frames are encoded while the next are drawn: encode is what the export spends besides drawing.
+    const raster::StageTimes before = times != nullptr ? *times : raster::StageTimes{};
+    raster::Stopwatch exporting;
     std::string report = export_animation(app, options, plan.frames, plan.fps,
                                           [&](raster::Framebuffer& frame, int index, std::vector<std::uint8_t>& alpha) {
                                               draw(frame, 2.0 * std::numbers::pi * index / plan.frames, alpha);
                                           });
+    if (times != nullptr) {
+        raster::Spent rest = exporting.lap();
+        for (const auto stage_of :
+             {&raster::StageTimes::prepare, &raster::StageTimes::draw, &raster::StageTimes::resolve}) {
+            rest.wall -= (times->*stage_of).spent.wall - (before.*stage_of).spent.wall;
+            rest.processor -= (times->*stage_of).spent.processor - (before.*stage_of).spent.processor;
+        }
+        times->encode.spent += rest;
+    }
     report += tail + seconds_text(loading + seconds_since(start));
     return [report] { return FinishedPicture{{}, report, true}; };
 }

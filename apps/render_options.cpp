@@ -169,6 +169,16 @@ void add_render_options(CLI::App& app, RenderArguments& arguments) {
             },
             ""))
         ->option_text("DIR");
+    app.add_flag("--timings", plan.timings,
+                 "After the report, print on standard error each stage's wall and processor (user + system) seconds, "
+                 "summed over a turntable's frames: read (the model, in its child process, and the copy back), "
+                 "prepare (framing, staging, each frame's scene), draw, resolve (of the samples) and encode (and "
+                 "write; a turntable's frames are encoded while the next are drawn, so its encode is the rest of the "
+                 "export). 'one core' is the share of the wall time with at most one thread busy: counted for draw "
+                 "and resolve, which run on the worker threads; estimated (~) for the others as (T*W - C)/((T-1)*W) "
+                 "from the wall W and processor time C on T threads, which holds only for a stage that runs either "
+                 "on one thread or on all. A high share is the serial part that more cores will not speed up "
+                 "(doc/performance.md#stage-timings)");
 }
 
 void settle_arguments(const CLI::App& app, RenderArguments& arguments, const raster::ReaderService& readers) {
@@ -194,6 +204,10 @@ void settle_arguments(const CLI::App& app, RenderArguments& arguments, const ras
     if (options.skip_existing && plan.frames == 0 && arguments.output_dir.empty()) {
         throw CLI::ValidationError(
             "--skip-existing keeps finished turntables and the pictures of --output-dir; a single still is simply drawn again");
+    }
+    if (plan.timings && !arguments.output_dir.empty()) {
+        throw CLI::ValidationError(
+            "--timings times the stages of one model's job; a batch (--output-dir) overlaps them, so time one model");
     }
     if (!plan.texture_path.empty()) {
         plan.texture = std::make_shared<const raster::Texture>(

@@ -6,6 +6,7 @@
 #include <raster/version.hpp>
 
 #include <raster/platform/cores.hpp>
+#include <raster/platform/stopwatch.hpp>
 
 #include <raster/image/colour.hpp>
 #include <raster/image/framebuffer.hpp>
@@ -71,6 +72,7 @@
 #include <raster/render/render_style.hpp>
 #include <raster/render/samples.hpp>
 #include <raster/render/scene.hpp>
+#include <raster/render/stage_times.hpp>
 
 #include <raster/scenes/diary_scenes.hpp>
 #include <raster/scenes/island_world.hpp>

@@ -283,9 +283,11 @@ Model model_from_outcome(const ChildOutcome& outcome, const std::string& name, c
 }
 
 Model read_in_child(const std::function<Model()>& read, const std::string& name, const std::string& reader,
-                    const ReaderLimits& limits) {
+                    const ReaderLimits& limits, double* processor_seconds) {
     if (!limits.separate_process) return read();
-    return model_from_outcome(run_reader_child(read, limits), name, reader, limits);
+    const ChildOutcome outcome = run_reader_child(read, limits);
+    if (processor_seconds != nullptr) *processor_seconds = outcome.processor_seconds;
+    return model_from_outcome(outcome, name, reader, limits);
 }
 
 }  // namespace detail

@@ -49,7 +49,9 @@ enum class ModelPassage : std::uint8_t { shared_memory, pipe };
 [[nodiscard]] std::string memory_refusal(const std::string& name, const std::string& reader,
                                          const ReaderLimits& limits);
 
+// `processor_seconds`, when given, receives the child's processor time.
 [[nodiscard]] Model read_in_child(const std::function<Model()>& read, const std::string& name,
-                                  const std::string& reader, const ReaderLimits& limits);
+                                  const std::string& reader, const ReaderLimits& limits,
+                                  double* processor_seconds = nullptr);
 
 }  // namespace raster::detail

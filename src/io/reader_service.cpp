@@ -175,7 +175,8 @@ ReaderService::~ReaderService() {
     }
 }
 
-Model ReaderService::read(const std::filesystem::path& path, const ObjOptions& options) const {
+Model ReaderService::read(const std::filesystem::path& path, const ObjOptions& options,
+                          double* processor_seconds) const {
     const std::string name = printable(path.string());
     const std::string reader = detail::reader_name(path);
     std::vector<std::uint8_t> request;
@@ -207,6 +208,7 @@ Model ReaderService::read(const std::filesystem::path& path, const ObjOptions& o
     answer.erase(answer.begin(),
                  answer.end() - static_cast<std::ptrdiff_t>(in.left()));  // the rest is what the reader sent
     outcome.message = std::move(answer);
+    if (processor_seconds != nullptr) *processor_seconds = outcome.processor_seconds;
     return detail::model_from_outcome(outcome, name, reader, options.limits);
 }
 

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "rasterize/busy_threads.hpp"
+
 #include <atomic>
 #include <condition_variable>
 #include <cstdint>
@@ -8,6 +10,8 @@
 #include <mutex>
 #include <thread>
 #include <vector>
+#include <pthread.h>
+#include <time.h>
 
 // Threads that stay for one render and take each of its parallel steps together (posing,
 // vertices, facets, strips), so that a step costs a wake-up rather than a thread's creation.
@@ -31,6 +35,23 @@ public:
 
     [[nodiscard]] int size() const noexcept { return static_cast<int>(helpers_.size()) + 1; }
 
+    // While set, each step tells `busy` when its threads begin and end their turns; the caller
+    // counts as busy outside the steps. Set and cleared between steps.
+    void count_busy(BusyThreads* busy) {
+        const std::lock_guard lock(mutex_);
+        busy_ = busy;
+    }
+
+    // Processor seconds (user and system) of the team: the calling thread's and every helper's.
+    [[nodiscard]] double processor_seconds() noexcept {
+        double seconds = thread_seconds(CLOCK_THREAD_CPUTIME_ID);
+        for (std::jthread& helper : helpers_) {
+            clockid_t clock{};
+            if (::pthread_getcpuclockid(helper.native_handle(), &clock) == 0) seconds += thread_seconds(clock);
+        }
+        return seconds;
+    }
+
     // Runs work(i) once for every i in [0, count), each thread taking the next i not yet taken,
     // and returns when all are done; the first exception is rethrown then.
     template <typename Work>
@@ -50,13 +71,21 @@ public:
         }
         start_.notify_all();
         take_turns();
+        if (busy_ != nullptr) busy_->ended();
         std::unique_lock lock(mutex_);
         done_.wait(lock, [this] { return running_ == 0; });
+        if (busy_ != nullptr) busy_->began();
         job_ = nullptr;
         if (failure_) std::rethrow_exception(failure_);
     }
 
 private:
+    static double thread_seconds(clockid_t clock) noexcept {
+        timespec at{};
+        if (::clock_gettime(clock, &at) != 0) return 0.0;
+        return static_cast<double>(at.tv_sec) + 1e-9 * static_cast<double>(at.tv_nsec);
+    }
+
     void take_turns() {
         for (int i = next_.fetch_add(1); i < count_; i = next_.fetch_add(1)) {
             try {
@@ -76,8 +105,11 @@ private:
             start_.wait(lock, [&] { return stopping_ || generation_ != seen; });
             if (stopping_) return;
             seen = generation_;
+            BusyThreads* const busy = busy_;
             lock.unlock();
+            if (busy != nullptr) busy->began();
             take_turns();
+            if (busy != nullptr) busy->ended();
             lock.lock();
             if (--running_ == 0) done_.notify_one();
         }
@@ -93,6 +125,7 @@ private:
     std::uint64_t generation_ = 0;
     bool stopping_ = false;
     std::exception_ptr failure_;
+    BusyThreads* busy_ = nullptr;        // set between steps, read under mutex_
     std::vector<std::jthread> helpers_;  // last: joined before what they read goes
 };
 

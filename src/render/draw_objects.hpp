@@ -16,6 +16,7 @@
 #include "render/draw_points_lines.hpp"
 #include "render/fragment_resolve.hpp"
 #include "render/shader_choice.hpp"
+#include "render/team_clock.hpp"
 
 #include <algorithm>
 #include <any>
@@ -46,6 +47,7 @@ struct Multisampling {
     std::span<const detail::SampleOffset> offsets{};
     std::uint8_t* alpha = nullptr;
     std::vector<detail::FragmentList>* fragments = nullptr;  // a Renderer's, kept from frame to frame; else the frame's
+    FrameTiming* timing = nullptr;                           // set when the frame's resolve is timed apart
 };
 
 // How an object's alpha is drawn: not at all, blended, or masked sample by sample (a mask
@@ -230,6 +232,7 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
             resolve_fragments(*list, {&framebuffer, samples, samples != nullptr ? nullptr : tested},
                               multisampling.alpha, strip.y, strip.y + strip.height);
     };
+    if (blending && multisampling.timing != nullptr) multisampling.timing->resolve_in_draw = true;
     if (blending) {
         // Each strip's blended triangles, in the objects' order, gathered into its thread's list and resolved while
         // they are still in cache; the next strip reuses the list's memory.
@@ -265,7 +268,9 @@ std::size_t render_objects(Framebuffer& framebuffer, const BasicScene<Camera>& s
             }
         });
     } else if (samples != nullptr) {
+        if (multisampling.timing != nullptr) multisampling.timing->resolve.start();
         team.for_each(layout.count(), [&](int s) { resolve_strip(s, nullptr); });
+        if (multisampling.timing != nullptr) multisampling.timing->resolve.stop();
     }
     return drawn;
 }

@@ -25,11 +25,13 @@ constexpr std::size_t kMaxSampleBufferBytes = std::size_t{1} << 30;
 // Multisampling shades once per pixel into `buffer`; supersampling (asked for, or when the
 // samples of the frame would not fit in kMaxSampleBufferBytes) draws a whole pass at each
 // sample position. `alpha`, for a scene that keeps depth, receives the share of samples covered; `fragments`,
-// when given, keeps the transparent fragments' memory from one frame to the next.
+// when given, keeps the transparent fragments' memory from one frame to the next; `timing`, when given, times the
+// resolve apart.
 template <typename Camera>
 std::size_t draw_samples(Framebuffer& framebuffer, const BasicScene<Camera>& scene, DepthBuffer& depth,
                          detail::WorkerTeam& team, RenderOptions options, detail::SampleBuffer& buffer,
-                         std::vector<std::uint8_t>* alpha, std::vector<detail::FragmentList>* fragments = nullptr) {
+                         std::vector<std::uint8_t>* alpha, std::vector<detail::FragmentList>* fragments = nullptr,
+                         FrameTiming* timing = nullptr) {
     const std::span<const glm::vec2> offsets = sample_offsets(options.samples);
     const std::size_t pixels =
         static_cast<std::size_t>(framebuffer.width()) * static_cast<std::size_t>(framebuffer.height());
@@ -40,7 +42,7 @@ std::size_t draw_samples(Framebuffer& framebuffer, const BasicScene<Camera>& sce
         const bool composited = alpha != nullptr && scene.keep_depth && blending;
         if (alpha != nullptr) alpha->assign(composited ? pixels : 0, 0);
         return draw(framebuffer, scene, depth, team, options.depth_first,
-                    {nullptr, {}, composited ? alpha->data() : nullptr, fragments});
+                    {nullptr, {}, composited ? alpha->data() : nullptr, fragments, timing});
     }
     if (!options.shade_every_sample && pixels * offsets.size() * 7 <= kMaxSampleBufferBytes) {
         std::array<detail::SampleOffset, detail::kMaxSamples> at{};
@@ -58,7 +60,7 @@ std::size_t draw_samples(Framebuffer& framebuffer, const BasicScene<Camera>& sce
             alpha->clear();  // an opaque scene has no coverage to give
         }
         return draw(framebuffer, scene, depth, team, options.depth_first,
-                    {&buffer, std::span(at.data(), offsets.size()), coverage, fragments});
+                    {&buffer, std::span(at.data(), offsets.size()), coverage, fragments, timing});
     }
     // Only a caller that takes the alpha gets the surfaces' colour apart from the background.
     const bool with_alpha = alpha != nullptr && scene.keep_depth;
@@ -71,14 +73,18 @@ std::size_t draw_samples(Framebuffer& framebuffer, const BasicScene<Camera>& sce
     for (const glm::vec2 offset : offsets) {
         moved.camera = scene.camera.sampled_at(glm::dvec2(offset));
         drawn = draw(pass, moved, depth, team, options.depth_first,
-                     {nullptr, {}, pass_alpha.empty() ? nullptr : pass_alpha.data(), fragments});
+                     {nullptr, {}, pass_alpha.empty() ? nullptr : pass_alpha.data(), fragments, timing});
+        if (timing != nullptr) timing->resolve.start();
         if (with_alpha) {
             resolve.add(pass, pass_alpha.empty() ? depth.coverage() : pass_alpha);
         } else {
             resolve.add(pass);
         }
+        if (timing != nullptr) timing->resolve.stop();
     }
+    if (timing != nullptr) timing->resolve.start();
     resolve.resolve(framebuffer, scene.background, with_alpha ? alpha : nullptr);
+    if (timing != nullptr) timing->resolve.stop();
     return drawn;
 }
 

@@ -1,3 +1,4 @@
+// ModelStage stays whole: the framing checks, the staged meshes and each frame's scene read together.
 #include <raster/render/model_scene.hpp>
 
 #include <raster/geometry/tangents.hpp>
@@ -223,8 +224,13 @@ std::size_t ModelStage::render(Framebuffer& frame, DepthBuffer& depth, double tu
     return posed_scene(turn, [&](const auto& scene) { return raster::render(frame, scene, depth, options); });
 }
 
-std::size_t ModelStage::render(Framebuffer& frame, Renderer& renderer, double turn) const {
-    return posed_scene(turn, [&](const auto& scene) { return renderer.render(frame, scene); });
+std::size_t ModelStage::render(Framebuffer& frame, Renderer& renderer, double turn, StageTimes* times) const {
+    if (times == nullptr) return posed_scene(turn, [&](const auto& scene) { return renderer.render(frame, scene); });
+    Stopwatch building;  // the frame's scene: part of prepare
+    return posed_scene(turn, [&](const auto& scene) {
+        times->prepare.spent += building.lap();
+        return renderer.render(frame, scene, times);
+    });
 }
 
 std::vector<std::string> replace_diffuse_maps(Model& model, const std::shared_ptr<const Texture>& texture,

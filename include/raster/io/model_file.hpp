@@ -2,6 +2,7 @@
 
 #include <raster/io/model.hpp>
 #include <raster/io/obj_file.hpp>
+#include <raster/platform/stopwatch.hpp>
 
 #include <cstdint>
 #include <filesystem>
@@ -29,7 +30,10 @@ namespace raster {
 // why, any other ending with the list of those it reads, and a file whose first bytes are
 // another format's saying what it looks like (doc/conventions.md#model-formats). The reader runs in a child process
 // under options.limits: a crash, a timeout or memory running out is one line naming the file.
-[[nodiscard]] Model read_model(const std::filesystem::path& path, const ObjOptions& options = {});
+// `spent`, when given, receives the read's wall time and processor time: the child's and this
+// thread's (the copy back), or the whole process's where the read runs in it.
+[[nodiscard]] Model read_model(const std::filesystem::path& path, const ObjOptions& options = {},
+                               Spent* spent = nullptr);
 
 // ".obj, .gltf, .glb, ... or .zgl": every ending read_model takes.
 [[nodiscard]] std::string model_endings();

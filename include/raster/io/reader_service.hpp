@@ -23,8 +23,9 @@ public:
     ReaderService& operator=(const ReaderService&) = delete;
 
     // What read_model(path, options) gives, the reading forked from the service. Calls from
-    // several threads take turns.
-    [[nodiscard]] Model read(const std::filesystem::path& path, const ObjOptions& options) const;
+    // several threads take turns. `processor_seconds`, when given, receives the reader's processor time.
+    [[nodiscard]] Model read(const std::filesystem::path& path, const ObjOptions& options,
+                             double* processor_seconds = nullptr) const;
 
 private:
     int socket_ = -1;

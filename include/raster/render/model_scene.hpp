@@ -57,8 +57,9 @@ public:
     // Draws the model turned by `turn` radians about the up axis through the target: a
     // turntable's frame. Returns the facets drawn.
     std::size_t render(Framebuffer& frame, DepthBuffer& depth, double turn = 0.0, RenderOptions options = {}) const;
-    // The same with a renderer's threads and depth buffer, kept from frame to frame.
-    std::size_t render(Framebuffer& frame, Renderer& renderer, double turn = 0.0) const;
+    // The same with a renderer's threads and depth buffer, kept from frame to frame; `times`, when
+    // given, receives the time of building the frame's scene (prepare) and of drawing it.
+    std::size_t render(Framebuffer& frame, Renderer& renderer, double turn = 0.0, StageTimes* times = nullptr) const;
 
 private:
     [[nodiscard]] std::vector<SceneObject> objects(double turn) const;

@@ -6,6 +6,7 @@
 #include <raster/geometry/shapes.hpp>
 #include <raster/image/framebuffer.hpp>
 #include <raster/rasterize/depth_buffer.hpp>
+#include <raster/render/stage_times.hpp>
 #include <raster/shade/intensity_lighting.hpp>
 #include <raster/shade/linear_lighting.hpp>
 #include <raster/shade/metallic_roughness.hpp>
@@ -144,8 +145,9 @@ public:
     Renderer(Renderer&&) noexcept;
     Renderer& operator=(Renderer&&) noexcept;
 
-    std::size_t render(Framebuffer& framebuffer, const Scene& scene);
-    std::size_t render(Framebuffer& framebuffer, const PerspectiveScene& scene);
+    // `times`, when given, receives the frame's draw and resolve times, added to what it holds.
+    std::size_t render(Framebuffer& framebuffer, const Scene& scene, StageTimes* times = nullptr);
+    std::size_t render(Framebuffer& framebuffer, const PerspectiveScene& scene, StageTimes* times = nullptr);
     [[nodiscard]] int threads() const noexcept;
     [[nodiscard]] int samples() const noexcept { return options_.samples; }
     // The depth of the last frame drawn with one sample (or of its last pass), for a scene that needed depth.
