@@ -138,7 +138,8 @@ void add_render_options(CLI::App& app, RenderArguments& arguments) {
         ->option_text("DEGREES");
     app.add_option(
            "--max-memory", arguments.max_memory,
-           "Memory one model's reading may take, as 512M, 2G or 2.5GiB: each model is read in a process of its own, and one "
+           "Memory one model's reading may take, as 512M, 2G or 2.5GiB: a model read through assimp or tinyobjloader is "
+           "read in a process of its own, a PLY or STL (raster's own readers) here with its counts checked first; one "
            "that needs more is refused in one line and the batch goes on [half the physical memory]")
         ->check(CLI::Validator(
             [](std::string& text) {
@@ -169,16 +170,17 @@ void add_render_options(CLI::App& app, RenderArguments& arguments) {
             },
             ""))
         ->option_text("DIR");
-    app.add_flag("--timings", plan.timings,
-                 "After the report, print on standard error each stage's wall and processor (user + system) seconds, "
-                 "summed over a turntable's frames: read (the model, in its child process, and the copy back), "
-                 "prepare (framing, staging, each frame's scene), draw, resolve (of the samples) and encode (and "
-                 "write; a turntable's frames are encoded while the next are drawn, so its encode is the rest of the "
-                 "export). 'one core' is the share of the wall time with at most one thread busy: counted for draw "
-                 "and resolve, which run on the worker threads; estimated (~) for the others as (T*W - C)/((T-1)*W) "
-                 "from the wall W and processor time C on T threads, which holds only for a stage that runs either "
-                 "on one thread or on all. A high share is the serial part that more cores will not speed up "
-                 "(doc/performance.md#stage-timings)");
+    app.add_flag(
+        "--timings", plan.timings,
+        "After the report, print on standard error each stage's wall and processor (user + system) seconds, "
+        "summed over a turntable's frames: read (the model: here for PLY and STL, else in its child process and the copy back), "
+        "prepare (framing, staging, each frame's scene), draw, resolve (of the samples) and encode (and "
+        "write; a turntable's frames are encoded while the next are drawn, so its encode is the rest of the "
+        "export). 'one core' is the share of the wall time with at most one thread busy: counted for draw "
+        "and resolve, which run on the worker threads; estimated (~) for the others as (T*W - C)/((T-1)*W) "
+        "from the wall W and processor time C on T threads, which holds only for a stage that runs either "
+        "on one thread or on all. A high share is the serial part that more cores will not speed up "
+        "(doc/performance.md#stage-timings)");
 }
 
 void settle_arguments(const CLI::App& app, RenderArguments& arguments, const raster::ReaderService& readers) {

@@ -13,6 +13,7 @@
 #include <raster/io/stl_file.hpp>
 #include <raster/platform/stopwatch.hpp>
 
+#include <new>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -50,10 +51,10 @@ std::pair<std::vector<std::uint8_t>, std::uintmax_t> check_content(const std::fi
 }
 
 // The least an STL's mesh takes: 96 bytes a triangle (three corners' positions and normals, a
-// facet), a binary one's count from its size, an ASCII one's at most one a 64 bytes of text.
+// facet), a binary one's count from its size, an ASCII one's at most one a 86 bytes of text (the
+// shortest facet: "facet normal 0 0 0 outer loop vertex 0 0 0 ... endloop endfacet").
 std::uint64_t least_stl_memory(std::span<const std::uint8_t> head, std::uintmax_t size) {
-    const std::uint64_t triangles =
-        is_binary_stl(head, size) ? (size - kStlHeaderBytes) / kStlRecordBytes : size / 64;
+    const std::uint64_t triangles = is_binary_stl(head, size) ? (size - kStlHeaderBytes) / kStlRecordBytes : size / 86;
     return triangles * 96;
 }
 
@@ -100,7 +101,12 @@ Model read_model(const std::filesystem::path& path, const ObjOptions& options, S
             throw std::runtime_error(detail::memory_refusal(printable(path.string()), reader, options.limits));
         return read_stl(path, options);
     };
-    Model model = read();
+    Model model;
+    try {
+        model = read();
+    } catch (const std::bad_alloc&) {  // read here, beyond what its counts promised
+        throw std::runtime_error(detail::memory_refusal(printable(path.string()), reader, options.limits));
+    }
     if (spent != nullptr) {
         *spent = clock.lap();
         spent->processor += child;

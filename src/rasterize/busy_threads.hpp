@@ -23,8 +23,8 @@ public:
 
 private:
     void change(int by) {
-        const auto now = std::chrono::steady_clock::now();
         const std::lock_guard lock(mutex_);
+        const auto now = std::chrono::steady_clock::now();  // read under the lock, so intervals never run backward
         if (busy_ <= 1) one_core_ += std::chrono::duration<double>(now - since_).count();
         since_ = now;
         busy_ += by;

@@ -55,6 +55,9 @@ inline std::size_t point_batch(std::size_t items, int threads) noexcept {
 constexpr std::size_t kSplatBatch = 16384;
 constexpr int kSplatBatchesPerThread = 8;
 
+// draw_splat_samples' box holds the pixel of a splat's centre only for radii of half a pixel or more.
+static_assert(kMinPointSize >= 1.0);
+
 // Splats whose pixels are fetched ahead of drawing: enough to cover a wait on memory.
 constexpr std::size_t kSplatsAhead = 16;
 

@@ -1,6 +1,7 @@
 // What a PLY carries that raster does not draw is named, once per file, whichever reader reads it
 // (doc/conventions.md#ply-reader).
 #include <raster/io/model.hpp>
+#include <raster/io/model_file.hpp>
 #include <raster/io/ply_file.hpp>
 
 #include "support/ply_files.hpp"
@@ -86,4 +87,8 @@ TEST(PlyUnread, AFileForAssimpsReaderNamesWhatIsNotDrawnOnce) {
     EXPECT_FALSE(model.parts[0].mesh.uvs.empty());  // assimp's reader read it
     const std::string name = file.string();
     EXPECT_EQ(model.warnings, std::vector<std::string>{name + ": vertex property quality is not drawn"});
+    // read_model reads it here, falls back to a child for assimp, and still names it once.
+    const Model routed = raster::read_model(file);
+    EXPECT_FALSE(routed.parts.at(0).mesh.uvs.empty());
+    EXPECT_EQ(routed.warnings, model.warnings);
 }

@@ -25,11 +25,12 @@ namespace raster {
 [[nodiscard]] Model parse_scene_file(std::span<const std::uint8_t> bytes, const std::string& format,
                                      const ObjOptions& options = {});
 
-// read_obj for .obj (any letter case), read_ply for .ply, read_scene_file for .gltf, .glb, .stl and the
+// read_obj for .obj (any letter case), read_ply for .ply, read_stl for .stl, read_scene_file for .gltf, .glb and the
 // further formats of model_endings(); a format raster knows but does not read is refused saying
 // why, any other ending with the list of those it reads, and a file whose first bytes are
-// another format's saying what it looks like (doc/conventions.md#model-formats). The reader runs in a child process
-// under options.limits: a crash, a timeout or memory running out is one line naming the file.
+// another format's saying what it looks like (doc/conventions.md#model-formats). PLY and STL are read in this process
+// (raster's own readers, their counts checked against options.limits' memory first), the others in a
+// child process under options.limits: a crash, a timeout or memory running out is one line naming the file.
 // `spent`, when given, receives the read's wall time and processor time: the child's and this
 // thread's (the copy back), or the whole process's where the read runs in it.
 [[nodiscard]] Model read_model(const std::filesystem::path& path, const ObjOptions& options = {},

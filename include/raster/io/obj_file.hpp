@@ -30,7 +30,7 @@ struct ObjOptions {
     // When set (by confinement_root), nothing outside this directory is read: what the model
     // names there is missing, with a warning.
     std::filesystem::path confine{};
-    // What read_model lets one model's reading cost, in a process of its own.
+    // What read_model lets one model's reading cost (in a process of its own for readers not raster's).
     ReaderLimits limits{};
 };
 

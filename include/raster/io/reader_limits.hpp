@@ -2,8 +2,9 @@
 
 #include <cstdint>
 
-// What reading one model may cost: it runs in a process of its own that a crash, a memory bomb
-// or an endless loop takes down alone (doc/conventions.md#reader-process).
+// What reading one model may cost: a reader raster does not own runs in a process of its own that
+// a crash, a memory bomb or an endless loop takes down alone; raster's own readers are held to
+// the memory by their counts (doc/conventions.md#reader-process).
 namespace raster {
 
 class ReaderService;

@@ -17,13 +17,15 @@
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace raster {
 namespace {
 
 // Checks the header's counts before anything is read: throws when they need too much memory.
-using Admission = std::function<void(const detail::PlyLayout&, std::uint64_t body_bytes)>;
+// Sees the least the model takes by the header's counts, then what the body read turned out to need.
+using Admission = std::function<void(std::uint64_t bytes)>;
 
 // The model in `bytes`, or what `assimp` reads for a file that needs assimp's reader.
 Model ply_model(detail::PlyBytes& bytes, const std::string& name, const ObjOptions& options, Model model,
@@ -46,8 +48,10 @@ Model ply_model(detail::PlyBytes& bytes, const std::string& name, const ObjOptio
         return theirs;
     }
     bytes.advance(layout.header_bytes);
-    if (admit) admit(layout, bytes.left());
-    detail::model_from_ply(detail::read_ply_body(layout, bytes, name), name, options, model);
+    if (admit) admit(detail::least_ply_memory(layout, bytes.left()));
+    detail::PlyBody body = detail::read_ply_body(layout, bytes, name);
+    if (admit) admit(detail::ply_body_memory(body));  // a face of many corners is many triangles
+    detail::model_from_ply(std::move(body), name, options, model);
     model.warnings.insert(model.warnings.end(), unread.begin(), unread.end());
     return model;
 }
@@ -91,11 +95,16 @@ std::uint64_t least_ply_memory(const PlyLayout& layout, std::uint64_t body_bytes
     return bytes;
 }
 
+std::uint64_t ply_body_memory(const PlyBody& body) noexcept {
+    const std::uint64_t faces = body.face_starts.size(), corners = body.corners.size();
+    return body.positions.size() * std::uint64_t{24} + (corners > 2 * faces ? corners - 2 * faces : 0) * 36;
+}
+
 Model read_ply_here(const std::filesystem::path& path, const ObjOptions& options,
                     const std::function<Model()>& elsewhere) {
     const std::string name = printable(path.string());
-    return read_ply_file(path, options, elsewhere, [&](const PlyLayout& layout, std::uint64_t body_bytes) {
-        if (least_ply_memory(layout, body_bytes) > memory_in_force(options.limits))
+    return read_ply_file(path, options, elsewhere, [&](std::uint64_t bytes) {
+        if (bytes > memory_in_force(options.limits))
             throw std::runtime_error(memory_refusal(name, "PLY", options.limits));
     });
 }

@@ -3,6 +3,7 @@
 #include <raster/io/model.hpp>
 #include <raster/io/obj_file.hpp>
 
+#include "io/ply/ply_body.hpp"
 #include "io/ply/ply_layout.hpp"
 
 #include <cstdint>
@@ -17,6 +18,9 @@ namespace raster::detail {
 // normal), 36 a face (one triangle); what --max-memory is checked against before reading. A count
 // is taken at most as large as `body_bytes` can hold, so a lying one gets the reader's own message.
 [[nodiscard]] std::uint64_t least_ply_memory(const PlyLayout& layout, std::uint64_t body_bytes) noexcept;
+
+// What the mesh of a body read takes at least: 24 bytes a vertex, 36 a triangle of its faces.
+[[nodiscard]] std::uint64_t ply_body_memory(const PlyBody& body) noexcept;
 
 // The model, read here when raster's own reader takes the whole file, else by `elsewhere` (assimp
 // in a child). Throws std::runtime_error with one line when the counts need more than

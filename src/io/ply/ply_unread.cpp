@@ -2,6 +2,8 @@
 
 #include "io/ply/vertex_slots.hpp"
 
+#include <raster/io/input_file.hpp>
+
 #include <cstddef>
 
 namespace raster::detail {
@@ -27,17 +29,17 @@ std::vector<std::string> ply_unread_warnings(const PlyLayout& layout, const std:
         if (element.count == 0 || element.properties.empty()) continue;  // nothing of it is left out
         if (element.name == "vertex") {
             for (const PlyProperty& p : element.properties) {
-                if (p.list || !VertexSlots::reads(p.name)) vertex.push_back(p.name);
+                if (p.list || !VertexSlots::reads(p.name)) vertex.push_back(printable(p.name, 40));
             }
         } else if (element.name == "face") {
             const int corners = ply_corner_list(element);
             for (std::size_t k = 0; k < element.properties.size(); ++k) {
                 const std::string& p = element.properties[k].name;
                 const bool assimps = for_assimp && (p == "texcoord" || p == "material_index");
-                if (static_cast<int>(k) != corners && !assimps) face.push_back(p);
+                if (static_cast<int>(k) != corners && !assimps) face.push_back(printable(p, 40));
             }
         } else if (!(for_assimp && assimp_reads_element(element.name))) {
-            elements.push_back(element.name);
+            elements.push_back(printable(element.name, 40));
         }
     }
     std::vector<std::string> warnings;
