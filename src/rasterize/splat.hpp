@@ -101,8 +101,8 @@ inline void draw_splat_samples(SampleBuffer& target, bool depth_test, const Spla
             const std::uint32_t keep = 0U - (((covered >> s) & 1U) & static_cast<std::uint32_t>(!behind));
             nearest[s] = std::bit_cast<float>((depth_bits & keep) | (std::bit_cast<std::uint32_t>(nearest[s]) & ~keep));
             const auto byte_keep = static_cast<std::uint8_t>(keep);
-            for (int c = 0; c < 3; ++c) {
-                std::uint8_t& out = colours[s * 3 + static_cast<std::size_t>(c)];
+            for (std::size_t c = 0; c < 3; ++c) {
+                std::uint8_t& out = colours[s * 3 + c];
                 out = static_cast<std::uint8_t>((colour[c] & byte_keep) | (out & ~byte_keep));
             }
         }

@@ -1,5 +1,6 @@
 #include <raster/io/ply_file.hpp>
 
+#include "io/model_blocks.hpp"
 #include "io/ply/ply_body.hpp"
 #include "io/ply/ply_bytes.hpp"
 #include "io/ply/ply_layout.hpp"
@@ -13,7 +14,6 @@
 #include <raster/io/model_file.hpp>
 
 #include <algorithm>
-#include <cstring>
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -59,22 +59,10 @@ Model ply_model(detail::PlyBytes& bytes, const std::string& name, const ObjOptio
 // Read by raster's own reader, or handed to `assimp`; `admit` sees the header first.
 Model read_ply_file(const std::filesystem::path& path, const ObjOptions& options, const std::function<Model()>& assimp,
                     const Admission& admit) {
-    const std::string name = printable(path.string());
-    InputRules rules;
-    rules.role = "model";
-    rules.max_bytes = kMaxModelFileBytes;
-    rules.confine = options.confine;
-    try {
-        InputFile file(path, rules);
-        Model model;
-        model.sources.push_back(file.record());
-        detail::PlyBytes bytes([&file](std::span<std::uint8_t> into) { return file.read_some(into); }, file.size());
-        return ply_model(bytes, name, options, std::move(model), assimp, admit);
-    } catch (const std::runtime_error& problem) {
-        const std::string what = problem.what();
-        if (what.starts_with(name + ":")) throw;
-        throw std::runtime_error(name + ": " + what);  // InputFile's reasons do not name the file
-    }
+    return detail::read_model_blocks(path, options,
+                                     [&](detail::PlyBytes& bytes, std::uint64_t, const std::string& name, Model model) {
+                                         return ply_model(bytes, name, options, std::move(model), assimp, admit);
+                                     });
 }
 
 }  // namespace
@@ -112,15 +100,7 @@ Model read_ply_here(const std::filesystem::path& path, const ObjOptions& options
 }  // namespace detail
 
 Model parse_ply(std::span<const std::uint8_t> bytes, const ObjOptions& options) {
-    std::size_t at = 0;
-    detail::PlyBytes source(
-        [&](std::span<std::uint8_t> into) {
-            const std::size_t n = std::min(into.size(), bytes.size() - at);
-            if (n > 0) std::memcpy(into.data(), bytes.data() + at, n);
-            at += n;
-            return n;
-        },
-        bytes.size());
+    detail::PlyBytes source = detail::blocks_in_memory(bytes);
     return ply_model(source, "<memory>", options, Model{}, [&] { return parse_scene_file(bytes, "ply", options); });
 }
 

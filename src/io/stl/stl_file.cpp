@@ -1,5 +1,6 @@
 #include <raster/io/stl_file.hpp>
 
+#include "io/model_blocks.hpp"
 #include "io/ply/ply_bytes.hpp"
 #include "io/stl/stl_ascii.hpp"
 #include "io/stl/stl_binary.hpp"
@@ -8,7 +9,6 @@
 #include <raster/io/input_file.hpp>
 
 #include <algorithm>
-#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -48,34 +48,14 @@ Model stl_model(detail::PlyBytes& bytes, std::uint64_t size, const std::string& 
 }  // namespace
 
 Model read_stl(const std::filesystem::path& path, const ObjOptions& options) {
-    const std::string name = printable(path.string());
-    InputRules rules;
-    rules.role = "model";
-    rules.max_bytes = kMaxModelFileBytes;
-    rules.confine = options.confine;
-    try {
-        InputFile file(path, rules);
-        Model model;
-        model.sources.push_back(file.record());
-        detail::PlyBytes bytes([&file](std::span<std::uint8_t> into) { return file.read_some(into); }, file.size());
-        return stl_model(bytes, file.size(), name, options, std::move(model));
-    } catch (const std::runtime_error& problem) {
-        const std::string what = problem.what();
-        if (what.starts_with(name + ":")) throw;
-        throw std::runtime_error(name + ": " + what);  // InputFile's reasons do not name the file
-    }
+    return detail::read_model_blocks(
+        path, options, [&](detail::PlyBytes& bytes, std::uint64_t size, const std::string& name, Model model) {
+            return stl_model(bytes, size, name, options, std::move(model));
+        });
 }
 
 Model parse_stl(std::span<const std::uint8_t> bytes, const ObjOptions& options) {
-    std::size_t at = 0;
-    detail::PlyBytes source(
-        [&](std::span<std::uint8_t> into) {
-            const std::size_t n = std::min(into.size(), bytes.size() - at);
-            if (n > 0) std::memcpy(into.data(), bytes.data() + at, n);
-            at += n;
-            return n;
-        },
-        bytes.size());
+    detail::PlyBytes source = detail::blocks_in_memory(bytes);
     return stl_model(source, bytes.size(), "<memory>", options, Model{});
 }
 
