@@ -46,13 +46,13 @@ LoadedModel load_model(const std::string& path, const RenderPlan& plan) {
     if (triangles > 0 || (points == 0 && lines == 0)) loaded.contents = std::to_string(triangles) + " triangles";
     if (points > 0) loaded.contents += (loaded.contents.empty() ? "" : ", ") + std::to_string(points) + " points";
     if (lines > 0) loaded.contents += (loaded.contents.empty() ? "" : ", ") + std::to_string(lines) + " lines";
-    loaded.model = std::make_shared<const raster::Model>(std::move(model));
+    loaded.model = std::move(model);
     loaded.times.prepare.spent = preparing.lap();
     loaded.seconds = seconds_since(start);
     return loaded;
 }
 
-std::function<FinishedPicture()> render_model(const CLI::App& app, ExportOptions options, const LoadedModel& loaded,
+std::function<FinishedPicture()> render_model(const CLI::App& app, ExportOptions options, LoadedModel& loaded,
                                               const RenderPlan& plan, raster::Renderer& renderer,
                                               raster::StageTimes* times) {
     const auto start = std::chrono::steady_clock::now();
@@ -65,11 +65,11 @@ std::function<FinishedPicture()> render_model(const CLI::App& app, ExportOptions
     raster::ModelView view = plan.view;
     if (plan.camera >= 0) {
         const auto index = static_cast<std::size_t>(plan.camera);
-        if (index >= loaded.model->cameras.size())
-            throw std::invalid_argument(raster::camera_refusal(*loaded.model, index));
-        view = raster::through_camera(view, loaded.model->cameras[index], *loaded.model);
+        if (index >= loaded.model.cameras.size())
+            throw std::invalid_argument(raster::camera_refusal(loaded.model, index));
+        view = raster::through_camera(view, loaded.model.cameras[index], loaded.model);
     }
-    const raster::ModelStage stage(loaded.model, view, options.width, options.height);
+    const raster::ModelStage stage(std::move(loaded.model), view, options.width, options.height);
     if (times != nullptr) times->prepare.spent += preparing.lap();
     const auto draw = [&](raster::Framebuffer& frame, double turn, std::vector<std::uint8_t>& alpha) {
         stage.render(frame, renderer, turn, times);

@@ -18,7 +18,7 @@
 
 // A model read and made ready to draw, with what its reading found.
 struct LoadedModel {
-    std::shared_ptr<const raster::Model> model;
+    raster::Model model;  // handed to the stage that draws it
     std::vector<raster::InputRecord> inputs;  // every file read for it, which no output may replace
     std::vector<std::string> warnings;
     std::string contents;      // "N triangles", and points and lines where it has them
@@ -43,10 +43,10 @@ struct RenderPlan {
 
 LoadedModel load_model(const std::string& path, const RenderPlan& plan);
 
-// Draws one loaded model and returns the step that finishes it: a still's encoding, which may
-// overlap the next model's drawing (an animation is written at once). `times`, when given,
+// Draws one loaded model, taking its model, and returns the step that finishes it: a still's
+// encoding, which may overlap the next model's drawing (an animation is written at once). `times`, when given,
 // receives the prepare and draw times, and an animation's encode: the rest of its export.
-std::function<FinishedPicture()> render_model(const CLI::App& app, ExportOptions options, const LoadedModel& loaded,
+std::function<FinishedPicture()> render_model(const CLI::App& app, ExportOptions options, LoadedModel& loaded,
                                               const RenderPlan& plan, raster::Renderer& renderer,
                                               raster::StageTimes* times = nullptr);
 

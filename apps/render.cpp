@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
         const ImageFormat format = picture_format(app, arguments);
         if (!arguments.output_dir.empty()) return render_batch(app, arguments, format, renderer, start);
         name_the_picture(app, arguments, format);
-        const LoadedModel loaded = load_model(arguments.model_path, arguments.plan);
+        LoadedModel loaded = load_model(arguments.model_path, arguments.plan);
         times = loaded.times;
         times.threads = renderer.threads();
         const auto finish = render_model(app, arguments.options, loaded, arguments.plan, renderer,

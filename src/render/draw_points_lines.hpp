@@ -12,6 +12,7 @@
 #include "render/point_projection.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <span>
 #include <stdexcept>
@@ -77,6 +78,10 @@ inline void prefetch_splat(const PointTargets& target, const Splat& splat, const
     }
 }
 
+// Points whose screen box sizes a cloud's splats: every point of a cloud under twice this many,
+// else every k-th, at least this many; a scan's even sample spans its whole box to a pixel.
+constexpr std::size_t kSizingPoints = std::size_t{1} << 20;
+
 // The splat diameter for `source`'s points: the scene's, or sized from their box on screen.
 template <typename Camera>
 double point_size(const PointProjection<Camera>& projection, const PointsAndLines& style, const Mesh& source,
@@ -87,13 +92,15 @@ double point_size(const PointProjection<Camera>& projection, const PointsAndLine
         double high_x = -low_x, high_y = -low_x;
         std::size_t seen = 0;
     };
-    const std::size_t count = source.points.size(), per = point_batch(count, team.size());
+    const std::size_t points = source.points.size(), step = std::max<std::size_t>(points / kSizingPoints, 1);
+    const std::size_t count = (points + step - 1) / step, per = point_batch(count, team.size());
     std::vector<Box> boxes((count + per - 1) / per);
     team.for_each(static_cast<int>(boxes.size()), [&](int b) {
         Box& box = boxes[static_cast<std::size_t>(b)];
         const std::size_t begin = static_cast<std::size_t>(b) * per, end = std::min(count, begin + per);
         for (std::size_t k = begin; k < end; ++k) {
-            const std::optional<ScreenPoint> p = projection.point(pose.position(source.positions[source.points[k]]));
+            const std::uint32_t i = source.points[k * step];
+            const std::optional<ScreenPoint> p = projection.point(pose.position(source.positions[i]));
             if (!p) continue;
             box.low_x = std::min(box.low_x, p->x), box.high_x = std::max(box.high_x, p->x);
             box.low_y = std::min(box.low_y, p->y), box.high_y = std::max(box.high_y, p->y);
@@ -107,7 +114,12 @@ double point_size(const PointProjection<Camera>& projection, const PointsAndLine
         all.seen += box.seen;
     }
     if (all.seen == 0) return kMinPointSize;
-    return automatic_point_size((all.high_x - all.low_x) * (all.high_y - all.low_y), all.seen);
+    // The sample's share in front of the camera, of the whole cloud.
+    const auto seen = step == 1 ? all.seen
+                                : static_cast<std::size_t>(std::llround(static_cast<double>(all.seen) *
+                                                                        static_cast<double>(points) /
+                                                                        static_cast<double>(count)));
+    return automatic_point_size((all.high_x - all.low_x) * (all.high_y - all.low_y), seen);
 }
 
 // Draws the object's points and segments, its vertices moved by its model matrix (vertex

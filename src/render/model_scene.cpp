@@ -49,18 +49,25 @@ std::string shown(double value) {
 // The mesh the stage draws for the part, copied once (a model of millions of points is large),
 // with tangents made from its texture coordinates where its normal map needs them and the file
 // gave none, for the whole part or for some vertices (doc/conventions.md#normal-maps).
-Mesh staged_mesh(const ModelPart& part, bool both) {
-    const auto lacks = [](const glm::vec4& t) { return glm::vec3(t) == glm::vec3(0.0F); };
+bool lacks_tangent(const glm::vec4& t) { return glm::vec3(t) == glm::vec3(0.0F); }
+
+// Whether the part's normal map needs tangents its mesh lacks, for some vertices or all.
+bool needs_tangents(const ModelPart& part) {
     const Mesh& given = part.mesh;
+    return part.metallic_roughness && part.metallic_roughness->normal_map &&
+           (given.tangents.size() != given.positions.size() ||
+            std::any_of(given.tangents.begin(), given.tangents.end(), lacks_tangent));
+}
+
+Mesh staged_mesh(const ModelPart& part, bool both) {
+    const Mesh& given = part.mesh;
+    if (!needs_tangents(part)) return both ? both_sides(given) : given;
     const bool whole = given.tangents.size() == given.positions.size();
-    if (!part.metallic_roughness || !part.metallic_roughness->normal_map ||
-        (whole && std::none_of(given.tangents.begin(), given.tangents.end(), lacks)))
-        return both ? both_sides(given) : given;
     Mesh mesh = given;
     const std::vector<glm::vec4> made = tangents_from_uvs(mesh);
     if (!whole) mesh.tangents = made;
     for (std::size_t i = 0; whole && i < made.size(); ++i) {
-        if (lacks(mesh.tangents[i])) mesh.tangents[i] = made[i];
+        if (lacks_tangent(mesh.tangents[i])) mesh.tangents[i] = made[i];
     }
     return both ? both_sides(mesh) : mesh;
 }
@@ -71,7 +78,14 @@ constexpr double kNearest = 1e-18, kFarthest = 1e18;
 }  // namespace
 
 ModelStage::ModelStage(std::shared_ptr<const Model> model, const ModelView& view, int width, int height)
-    : model_(std::move(model)), shading_(view.shading) {
+    : ModelStage(std::move(model), nullptr, view, width, height) {}
+
+ModelStage::ModelStage(Model&& model, const ModelView& view, int width, int height)
+    : ModelStage(nullptr, std::make_shared<Model>(std::move(model)), view, width, height) {}
+
+ModelStage::ModelStage(std::shared_ptr<const Model> model, const std::shared_ptr<Model>& owned, const ModelView& view,
+                       int width, int height)
+    : model_(owned ? owned : std::move(model)), shading_(view.shading) {
     check_points_and_lines(view.points_and_lines);  // refused before the model is framed
     if (!model_) throw std::invalid_argument("no model to stage");
     const Bounds bounds = bounds_of(*model_);
@@ -93,7 +107,9 @@ ModelStage::ModelStage(std::shared_ptr<const Model> model, const ModelView& view
     for (std::size_t i = 0; i < model_->parts.size(); ++i) {
         const ModelPart& part = model_->parts[i];
         const bool both = view.cull == Culling::none || (view.cull == Culling::automatic && open[i]);
-        auto mesh = std::make_shared<Mesh>(staged_mesh(part, both));
+        // A mesh the stage owns and draws as it is moves over, its positions moved in place.
+        const bool as_read = owned && !both && !needs_tangents(part);
+        auto mesh = std::make_shared<Mesh>(as_read ? std::move(owned->parts[i].mesh) : staged_mesh(part, both));
         for (glm::vec3& p : mesh->positions) p = glm::vec3(unit_from_world(glm::dvec3(p)));
         meshes_.push_back(std::move(mesh));
     }

@@ -53,6 +53,9 @@ public:
     // Throws std::invalid_argument for a view it cannot take (the eye on the target or looking
     // along `up`, a lens out of range, non-finite numbers) or a model too large to frame.
     ModelStage(std::shared_ptr<const Model> model, const ModelView& view, int width, int height);
+    // The same, taking the model: meshes drawn as they are move into the stage rather than being
+    // copied, so a model of millions of points is held once.
+    ModelStage(Model&& model, const ModelView& view, int width, int height);
 
     // Draws the model turned by `turn` radians about the up axis through the target: a
     // turntable's frame. Returns the facets drawn.
@@ -62,6 +65,9 @@ public:
     std::size_t render(Framebuffer& frame, Renderer& renderer, double turn = 0.0, StageTimes* times = nullptr) const;
 
 private:
+    // `owned`, when given, is the model, whose meshes the stage may take.
+    ModelStage(std::shared_ptr<const Model> model, const std::shared_ptr<Model>& owned, const ModelView& view,
+               int width, int height);
     [[nodiscard]] std::vector<SceneObject> objects(double turn) const;
     template <typename Draw>
     std::size_t posed_scene(double turn, Draw draw) const;
