@@ -18,7 +18,7 @@
 
 // A model read and made ready to draw, with what its reading found.
 struct LoadedModel {
-    raster::Model model;  // handed to the stage that draws it
+    raster::Model model;                      // handed to the stage that draws it
     std::vector<raster::InputRecord> inputs;  // every file read for it, which no output may replace
     std::vector<std::string> warnings;
     std::string contents;      // "N triangles", and points and lines where it has them

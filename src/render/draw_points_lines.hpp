@@ -115,10 +115,10 @@ double point_size(const PointProjection<Camera>& projection, const PointsAndLine
     }
     if (all.seen == 0) return kMinPointSize;
     // The sample's share in front of the camera, of the whole cloud.
-    const auto seen = step == 1 ? all.seen
-                                : static_cast<std::size_t>(std::llround(static_cast<double>(all.seen) *
-                                                                        static_cast<double>(points) /
-                                                                        static_cast<double>(count)));
+    const auto seen =
+        step == 1 ? all.seen
+                  : static_cast<std::size_t>(std::llround(static_cast<double>(all.seen) * static_cast<double>(points) /
+                                                          static_cast<double>(count)));
     return automatic_point_size((all.high_x - all.low_x) * (all.high_y - all.low_y), seen);
 }
 
