@@ -247,3 +247,32 @@ TEST(PlyReader, AnAsciiByteColourAbove255ReadsAsFullNotPastTheTable) {
     EXPECT_EQ(colours[1].r, 1.0F);
     EXPECT_EQ(colours[1].b, static_cast<float>(raster::linear_from_srgb_channel(128.0F / 255.0F)));
 }
+
+TEST(PlyReader, RecordsOfFloatsAndBytesReadAsTheyLieGiveWhatTheOtherByteOrderGives) {
+    // Little-endian floats and bytes are read as they lie; big-endian goes value by value.
+    const double nan = std::nan(""), inf = HUGE_VAL;
+    for (const bool faces : {false, true}) {
+        std::vector<std::string> texts;
+        for (const char* format : {"binary_little_endian", "binary_big_endian"}) {
+            PlySpec spec;
+            spec.format = format;
+            spec.vertex = {{"float", "x"},  {"float", "y"},   {"float", "z"},     {"float", "nx"},  {"float", "ny"},
+                           {"float", "nz"}, {"uchar", "red"}, {"uchar", "green"}, {"uchar", "blue"}};
+            spec.vertices = {{0, 0, 0, 0, 0, 2, 255, 0, 7},       {1, 2, 3, inf, 0, 1, 0, 128, 255},
+                             {-1, 0.5, 2, 0, 3, 4, 1, 2, 3},      {nan, 0, 0, 0, 0, 1, 9, 9, 9},
+                             {0, -inf, 0, 1, 0, 0, 200, 100, 50}, {4, 4, 4, 0, 0, 0, 60, 70, 80}};
+            spec.face_list = faces ? "uchar int" : "";
+            if (faces) spec.faces = {{0, 1, 2}, {2, 1, 5}};
+            texts.push_back(test_support::ply_text(spec));
+        }
+        const auto read = [](const std::string& text) {
+            return raster::parse_ply(std::vector<std::uint8_t>(text.begin(), text.end()));
+        };
+        const Model plain = read(texts[0]), general = read(texts[1]);
+        expect_same(plain, general, faces ? "faces" : "cloud");
+        if (!faces) {
+            ASSERT_EQ(plain.parts.size(), 1U);
+            EXPECT_EQ(plain.parts[0].mesh.points.size(), 4U);  // the two that are not finite skipped
+        }
+    }
+}

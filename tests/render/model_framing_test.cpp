@@ -80,3 +80,30 @@ TEST(ModelFraming, FacesTooSmallForFloatsAtTheirDistanceAreRefusedWithTheReason)
               "<memory>: every face has no area (stored as 32-bit floats, coordinates near 1e+07 step by 1: move the "
               "model nearer the origin)");
 }
+
+TEST(ModelFraming, AStageThatTakesItsModelDrawsWhatOneSharingItDraws) {
+    // Open squares are drawn from both sides (copied, unless culled); the points' part moves over as it is.
+    const raster::Model model = raster::parse_obj(two_squares(1.0, 0.0) + "v 0.2 0.8 0.3\nv 0.9 0.1 0.3\np 9 10\n",
+                                                  "newmtl green\nKd 0 1 0\nnewmtl red\nKd 1 0 0\n");
+    ASSERT_EQ(model.parts.size(), 3U);
+    for (const bool orthographic : {false, true}) {
+        for (const raster::Culling cull : {raster::Culling::automatic, raster::Culling::back}) {
+            raster::ModelView view;
+            view.orthographic = orthographic;
+            view.cull = cull;  // back: every part moves over
+            view.points_and_lines.point_size = 5.0;
+            const auto drawn = [&](const raster::ModelStage& stage) {
+                Framebuffer image(40, 30);
+                raster::DepthBuffer depth;
+                stage.render(image, depth, 0.7);
+                return image;
+            };
+            const Framebuffer shared =
+                drawn(raster::ModelStage(std::make_shared<const raster::Model>(model), view, 40, 30));
+            raster::Model taken = model;
+            EXPECT_EQ(drawn(raster::ModelStage(std::move(taken), view, 40, 30)), shared) << orthographic;
+            view.shading = raster::ShadingMethod::unlit;
+            EXPECT_NE(drawn(raster::ModelStage(raster::Model(model), view, 40, 30)), shared) << "the test can tell";
+        }
+    }
+}

@@ -108,11 +108,15 @@ private:
             record += static_cast<std::size_t>(ply_type_bytes(p.type));
         }
         if (record == 0) return;  // items of no properties take no bytes
+        const bool plain = vertices && slots_.plain(big_);
         for (std::uint64_t i = 0; i < element.count;) {
             const std::span<const std::uint8_t> held = bytes_.ahead(record);
             const std::uint64_t whole = std::min<std::uint64_t>(held.size() / record, element.count - i);
             if (whole == 0) return cut_short(element, i);
-            if (vertices) {
+            if (plain) {
+                for (std::uint64_t k = 0; k < whole; ++k)
+                    slots_.keep_plain(held.data() + k * record, offsets.data(), body_);
+            } else if (vertices) {
                 for (std::uint64_t k = 0; k < whole; ++k) {
                     const std::uint8_t* at_record = held.data() + k * record;
                     slots_.keep(

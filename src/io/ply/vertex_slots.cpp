@@ -1,6 +1,7 @@
 #include "io/ply/vertex_slots.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <utility>
 
 namespace raster::detail {
@@ -46,6 +47,16 @@ void VertexSlots::reserve(PlyBody& body, std::uint64_t vertices) const {
     if (uvs_) body.uvs.reserve(vertices);
     if (colours_) body.colours.reserve(vertices);
     if (at_[alpha] != kNone) body.alphas.reserve(vertices);
+}
+
+bool VertexSlots::plain(bool big) const noexcept {
+    if (big != (std::endian::native == std::endian::big)) return false;
+    const auto all = [&](Slot from, Slot to, PlyType type) {
+        return std::all_of(at_.begin() + from, at_.begin() + to, [](std::size_t p) { return p != kNone; }) &&
+               std::all_of(types_.begin() + from, types_.begin() + to, [&](PlyType t) { return t == type; });
+    };
+    return all(x, nx, PlyType::float32) && (!normals_ || all(nx, red, PlyType::float32)) &&
+           (!colours_ || all(red, alpha, PlyType::uint8)) && at_[alpha] == kNone && !uvs_;
 }
 
 float VertexSlots::scaled(double value, PlyType type) noexcept {

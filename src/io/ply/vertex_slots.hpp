@@ -10,6 +10,8 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <string_view>
 
@@ -36,24 +38,9 @@ public:
     void keep(const ValueOf& value_of, PlyBody& body) const {
         const auto read = [&](Slot s) { return at_[s] == kNone ? 0.0F : static_cast<float>(value_of(at_[s])); };
         const float px = read(x), py = read(y), pz = read(z);
-        if (!std::isfinite(px) || !std::isfinite(py) || !std::isfinite(pz)) {
-            ++body.non_finite;
-            if (!keep_places_) return;
-            body.positions.emplace_back(std::numeric_limits<float>::quiet_NaN());
-            if (normals_) body.normals.emplace_back(0.0F);
-            if (uvs_) body.uvs.emplace_back(0.0F);
-            if (colours_) body.colours.push_back({1.0F, 1.0F, 1.0F});
-            if (at_[alpha] != kNone) body.alphas.push_back(1.0F);
-            return;
-        }
+        if (!std::isfinite(px) || !std::isfinite(py) || !std::isfinite(pz)) return keep_non_finite(body);
         body.positions.emplace_back(px, py, -pz);
-        if (normals_) {
-            const float a = read(nx), b = read(ny), c = read(nz);
-            const bool finite = std::isfinite(a) && std::isfinite(b) && std::isfinite(c);
-            const glm::vec3 n = finite ? glm::vec3(a, b, -c) : glm::vec3(0.0F);
-            // A cloud's points keep the file's normal made unit; faces' corners are made so later.
-            body.normals.push_back(keep_places_ ? n : unit_or_zero(n));
-        }
+        if (normals_) keep_normal(read(nx), read(ny), read(nz), body);
         if (uvs_) {
             const float s = read(u), t = read(v);
             body.uvs.emplace_back(std::isfinite(s) ? s : 0.0F, std::isfinite(t) ? t : 0.0F);
@@ -65,8 +52,46 @@ public:
             body.alphas.push_back(vertex_alpha(scaled(value_of(at_[alpha]), types_[alpha]), body.unreadable_alphas));
     }
 
+    // Whether every property read is a float32 position or normal or a uint8 colour, written in
+    // the machine's byte order (`big` or not): then a record is read as it lies (keep_plain).
+    [[nodiscard]] bool plain(bool big) const noexcept;
+    // keep() for a plain binary record at `record`, property p at byte offsets[p] in it.
+    void keep_plain(const std::uint8_t* record, const std::size_t* offsets, PlyBody& body) const {
+        const auto at = [&](Slot s) {
+            float value = 0.0F;
+            std::memcpy(&value, record + offsets[at_[s]], sizeof value);
+            return value;
+        };
+        const float px = at(x), py = at(y), pz = at(z);
+        if (!std::isfinite(px) || !std::isfinite(py) || !std::isfinite(pz)) return keep_non_finite(body);
+        body.positions.emplace_back(px, py, -pz);
+        if (normals_) keep_normal(at(nx), at(ny), at(nz), body);
+        if (colours_) {
+            body.colours.push_back({linear_bytes_[record[offsets[at_[red]]]],
+                                    linear_bytes_[record[offsets[at_[green]]]],
+                                    linear_bytes_[record[offsets[at_[blue]]]]});
+        }
+    }
+
 private:
     static constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+
+    // A vertex whose position is not finite: counted, and kept as NaN where places count.
+    void keep_non_finite(PlyBody& body) const {
+        ++body.non_finite;
+        if (!keep_places_) return;
+        body.positions.emplace_back(std::numeric_limits<float>::quiet_NaN());
+        if (normals_) body.normals.emplace_back(0.0F);
+        if (uvs_) body.uvs.emplace_back(0.0F);
+        if (colours_) body.colours.push_back({1.0F, 1.0F, 1.0F});
+        if (at_[alpha] != kNone) body.alphas.push_back(1.0F);
+    }
+    void keep_normal(float a, float b, float c, PlyBody& body) const {
+        const bool finite = std::isfinite(a) && std::isfinite(b) && std::isfinite(c);
+        const glm::vec3 n = finite ? glm::vec3(a, b, -c) : glm::vec3(0.0F);
+        // A cloud's points keep the file's normal made unit; faces' corners are made so later.
+        body.normals.push_back(keep_places_ ? n : unit_or_zero(n));
+    }
 
     [[nodiscard]] bool any(Slot from, Slot to) const noexcept {
         return std::any_of(at_.begin() + from, at_.begin() + to, [](std::size_t p) { return p != kNone; });
