@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdint>
 #include <span>
+#include <type_traits>
 
 // A point drawn as a round splat facing the viewer: a disc of one colour and one depth, covering
 // the samples whose positions lie inside it (doc/conventions.md#points-and-lines).
@@ -76,14 +77,31 @@ inline double sample_spread(std::span<const SampleOffset> offsets) noexcept {
     return spread + 1e-6;
 }
 
+// Calls `draw` with the sample count as a constant where it is one of the standard counts (so
+// the splat's loops over samples unroll), else with 0: any count.
+template <typename Draw>
+void with_sample_count(std::size_t count, const Draw& draw) {
+    switch (count) {
+    case 1: return draw(std::integral_constant<std::size_t, 1>{});
+    case 2: return draw(std::integral_constant<std::size_t, 2>{});
+    case 4: return draw(std::integral_constant<std::size_t, 4>{});
+    case 8: return draw(std::integral_constant<std::size_t, 8>{});
+    case 16: return draw(std::integral_constant<std::size_t, 16>{});
+    default: return draw(std::integral_constant<std::size_t, 0>{});
+    }
+}
+
 // The same at the samples of `target`: every sample inside the disc is tested (when
 // `depth_test`) and written, so the disc's edge is anti-aliased by the samples. The pixel holding
-// the centre always keeps at least its sample nearest the centre.
-inline void draw_splat_samples(SampleBuffer& target, bool depth_test, const Splat& splat, float radius,
+// the centre always keeps at least its sample nearest the centre. `spread` is
+// sample_spread(offsets); `Count`, when not 0, is the number of offsets, fixed so loops unroll.
+template <std::size_t Count = 0>
+inline void draw_splat_samples(SampleBuffer& target, bool depth_test, const Splat& splat, float radius, double spread,
                                const PixelRect& rows, std::span<const SampleOffset> offsets) noexcept {
+    static_assert(Count <= kMaxSamples);
     const double r2 = static_cast<double>(radius) * radius;
-    const std::size_t count = std::min<std::size_t>(offsets.size(), kMaxSamples);
-    const double reach = radius + sample_spread(offsets.first(count));
+    const std::size_t count = Count != 0 ? Count : std::min<std::size_t>(offsets.size(), kMaxSamples);
+    const double reach = radius + spread;
     const int y_first = std::max(static_cast<int>(std::ceil(splat.y - reach)), rows.y);
     const int y_last = std::min(static_cast<int>(std::floor(splat.y + reach)), rows.y + rows.height - 1);
     const int x_first = std::max(static_cast<int>(std::ceil(splat.x - reach)), 0);
@@ -117,12 +135,17 @@ inline void draw_splat_samples(SampleBuffer& target, bool depth_test, const Spla
         }
         return std::uint32_t{1} << nearest;
     };
+    std::array<double, Count != 0 ? Count : kMaxSamples> across{};  // each sample's squared distance along y
     for (int y = y_first; y <= y_last; ++y) {
+        const double dy = y - static_cast<double>(splat.y);
+        for (std::size_t s = 0; s < count; ++s) across[s] = (dy + offsets[s].y) * (dy + offsets[s].y);
         for (int x = x_first; x <= x_last; ++x) {
-            const double dx = x - static_cast<double>(splat.x), dy = y - static_cast<double>(splat.y);
+            const double dx = x - static_cast<double>(splat.x);
             std::uint32_t covered = 0;
             for (std::size_t s = 0; s < count; ++s) {
-                if (on_disc(dx + offsets[s].x, dy + offsets[s].y, r2)) covered |= std::uint32_t{1} << s;
+                // on_disc, its y term taken from the row.
+                const double along = dx + offsets[s].x;
+                if (along * along + across[s] <= r2) covered |= std::uint32_t{1} << s;
             }
             if (covered == 0 && x == own_x && y == own_y) covered = nearest_sample(dx, dy);
             if (covered != 0) draw_pixel(x, y, covered);

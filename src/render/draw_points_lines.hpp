@@ -190,6 +190,8 @@ void draw_points_lines(const Camera& camera, const PointsAndLines& style, const 
     if (points == 0) return;
     const double radius = point_size(projection, style, source, pose, team) / 2.0;
     const auto splat_radius = static_cast<float>(radius);
+    const double spread =
+        sampled ? sample_spread(target.offsets.first(std::min<std::size_t>(target.offsets.size(), kMaxSamples))) : 0.0;
     const std::size_t batches = (points + kSplatBatch - 1) / kSplatBatch;
     std::vector<StripSorted<Splat>> round(
         std::min(batches, static_cast<std::size_t>(kSplatBatchesPerThread) * static_cast<std::size_t>(team.size())),
@@ -214,18 +216,20 @@ void draw_points_lines(const Camera& camera, const PointsAndLines& style, const 
         });
         team.for_each(layout.count(), [&](int s) {
             const PixelRect strip = layout.strip(s);
-            for (std::size_t b = 0; b < count; ++b) {
-                const std::span<const Splat> splats = round[b].in(s);
-                for (std::size_t k = 0; k < splats.size(); ++k) {
-                    if (k + kSplatsAhead < splats.size()) prefetch_splat(target, splats[k + kSplatsAhead], strip);
-                    if (sampled) {
-                        draw_splat_samples(*target.samples, target.depth_test, splats[k], splat_radius, strip,
-                                           target.offsets);
-                    } else {
-                        draw_splat(*target.framebuffer, target.depth, splats[k], splat_radius, strip);
+            with_sample_count(sampled ? target.offsets.size() : 1, [&](auto samples) {
+                for (std::size_t b = 0; b < count; ++b) {
+                    const std::span<const Splat> splats = round[b].in(s);
+                    for (std::size_t k = 0; k < splats.size(); ++k) {
+                        if (k + kSplatsAhead < splats.size()) prefetch_splat(target, splats[k + kSplatsAhead], strip);
+                        if (sampled) {
+                            draw_splat_samples<samples()>(*target.samples, target.depth_test, splats[k], splat_radius,
+                                                          spread, strip, target.offsets);
+                        } else {
+                            draw_splat(*target.framebuffer, target.depth, splats[k], splat_radius, strip);
+                        }
                     }
                 }
-            }
+            });
         });
     }
 }

@@ -1,6 +1,6 @@
-// raster's own PLY reader gives what assimp's gave through the scene reader: the same parts,
-// positions, normals, facets, colours, texture coordinates, points and lines
-// (doc/conventions.md#ply-reader).
+// Stays whole, every case compared by expect_same: raster's own PLY reader gives what assimp's
+// gave through the scene reader: the same parts, positions, normals, facets, colours, texture
+// coordinates, points and lines (doc/conventions.md#ply-reader).
 #include <raster/io/model_file.hpp>
 #include <raster/io/ply_file.hpp>
 
