@@ -1,11 +1,13 @@
 #include "io/model_builder.hpp"
 
+#include "io/vertex_ids.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <map>
 #include <numbers>
-#include <tuple>
+#include <span>
 #include <glm/geometric.hpp>
 
 namespace raster::detail {
@@ -31,10 +33,6 @@ glm::vec3 unit_of(glm::dvec3 v) {
 // Beyond this many facets around one position, its corners keep their facets' normals: the
 // smoothing compares every pair, and a fan of thousands would take quadratic time.
 constexpr std::size_t kMaxSmoothedNeighbours = 64;
-
-// A vertex of the output: one position with one normal, texture coordinate, colour and tangent.
-using VertexKey =
-    std::tuple<std::int64_t, std::uint32_t, std::uint32_t, std::uint32_t, std::int64_t, std::int64_t, std::int64_t>;
 
 // Which of the optional per-vertex arrays a material's mesh has: any corner of it that has one gives it to all.
 struct VertexArrays {
@@ -89,21 +87,32 @@ void add_every_vertex_as_a_point(PolygonSoup& soup) {
 }
 
 std::vector<std::pair<int, Mesh>> meshes_by_material(const PolygonSoup& soup, double crease_degrees) {
-    // Facet normals, and the facets around each position, for the normals the file lacks.
+    // Facet normals, and the facets around each position (in facet order, counted then filled,
+    // with no list allocated for each position), for the normals the file lacks.
     std::vector<glm::dvec3> weighted(soup.triangles.size());
     std::vector<glm::vec3> unit(soup.triangles.size());
-    std::vector<std::vector<std::uint32_t>> around(soup.positions.size());
+    std::vector<std::size_t> first_around(soup.positions.size() + 1, 0);
     for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
         weighted[t] = area_normal(soup, soup.triangles[t]);
         unit[t] = unit_of(weighted[t]);
         if (unit[t] == glm::vec3(0.0F)) continue;
-        for (const SoupCorner& corner : soup.triangles[t].corners) {
-            around[static_cast<std::size_t>(corner.position)].push_back(static_cast<std::uint32_t>(t));
-        }
+        for (const SoupCorner& corner : soup.triangles[t].corners)
+            ++first_around[static_cast<std::size_t>(corner.position) + 1];
     }
+    for (std::size_t p = 1; p < first_around.size(); ++p) first_around[p] += first_around[p - 1];
+    std::vector<std::uint32_t> around(first_around.back());
+    std::vector<std::size_t> filled(first_around.begin(), first_around.end() - 1);
+    for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
+        if (unit[t] == glm::vec3(0.0F)) continue;
+        for (const SoupCorner& corner : soup.triangles[t].corners)
+            around[filled[static_cast<std::size_t>(corner.position)]++] = static_cast<std::uint32_t>(t);
+    }
+    filled = {};
     const auto cos_crease = static_cast<float>(std::cos(crease_degrees * std::numbers::pi / 180.0));
     const auto generated_normal = [&](std::size_t t, std::int64_t position) {
-        const std::vector<std::uint32_t>& neighbours = around[static_cast<std::size_t>(position)];
+        const auto p = static_cast<std::size_t>(position);
+        const std::span<const std::uint32_t> neighbours(around.data() + first_around[p],
+                                                        first_around[p + 1] - first_around[p]);
         if (crease_degrees <= 0.0 || neighbours.size() > kMaxSmoothedNeighbours) return unit[t];
         glm::dvec3 sum(0.0);
         for (const std::uint32_t other : neighbours) {
@@ -116,7 +125,7 @@ std::vector<std::pair<int, Mesh>> meshes_by_material(const PolygonSoup& soup, do
     };
 
     std::map<int, Mesh> meshes;
-    std::map<int, std::map<VertexKey, std::uint32_t>> vertices;
+    VertexIds vertices(soup.positions.size());
     std::map<int, VertexArrays> arrays;
     const auto note_corner = [&](const SoupCorner& corner, int material) {
         VertexArrays& with = arrays[material];
@@ -131,14 +140,21 @@ std::vector<std::pair<int, Mesh>> meshes_by_material(const PolygonSoup& soup, do
     for (const SoupSegment& segment : soup.segments) {
         for (const SoupCorner& end : segment.ends) note_corner(end, segment.material);
     }
-    // A vertex of `material`'s mesh with `normal`: shared with any other corner that has all its attributes.
+    // A vertex of `material`'s mesh with `normal`: shared with any other corner that has all its
+    // attributes. The last material's mesh, ids and arrays are kept: files give faces in runs.
+    struct Looked {
+        int material = 0;
+        Mesh* mesh = nullptr;
+        VertexArrays with;
+    } last;
     const auto vertex_of = [&](const SoupCorner& corner, glm::vec3 normal, int material) {
-        Mesh& mesh = meshes[material];
+        if (last.mesh == nullptr || last.material != material) last = {material, &meshes[material], arrays[material]};
         const VertexKey key{corner.position, bits_of(normal.x), bits_of(normal.y), bits_of(normal.z),
                             corner.uv,       corner.colour,     corner.tangent};
-        const auto [at, added] = vertices[material].try_emplace(key, static_cast<std::uint32_t>(mesh.positions.size()));
-        if (added) push_vertex(mesh, soup, corner, normal, arrays[material]);
-        return at->second;
+        const auto [id, added] =
+            vertices.find_or_add(material, key, static_cast<std::uint32_t>(last.mesh->positions.size()));
+        if (added) push_vertex(*last.mesh, soup, corner, normal, last.with);
+        return id;
     };
     for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
         if (unit[t] == glm::vec3(0.0F)) continue;  // no area: it could never cover a pixel
@@ -151,7 +167,7 @@ std::vector<std::pair<int, Mesh>> meshes_by_material(const PolygonSoup& soup, do
             if (normal == glm::vec3(0.0F)) normal = generated_normal(t, corner.position);
             facet.corners[k] = vertex_of(corner, normal, triangle.material);
         }
-        meshes[triangle.material].facets.push_back(facet);
+        last.mesh->facets.push_back(facet);
     }
     // Every point is a vertex of its own: a cloud of millions would only slow a shared index down.
     // Its arrays are sized once, so that they are never copied as they grow.
