@@ -157,12 +157,14 @@ std::string stl_of(const Shape& shape) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc != 4 || std::strcmp(argv[1], "--help") == 0) {
+    const bool help = argc == 2 && std::strcmp(argv[1], "--help") == 0;
+    if (argc != 4) {
         std::fputs("usage: model-gen grid|sphere|cloud COUNT FILE.obj|.ply|.stl\n"
                    "  COUNT triangles (grid, sphere) or points (cloud), up to 100000000; FILE must not exist\n",
-                   argc == 2 ? stdout : stderr);
-        return argc == 2 ? 0 : 2;
+                   help ? stdout : stderr);
+        return help ? 0 : 2;
     }
+    std::filesystem::path partial;  // removed if anything fails once it is written
     try {
         const std::string kind = argv[1];
         const std::filesystem::path file = argv[3];
@@ -184,14 +186,17 @@ int main(int argc, char** argv) {
                                   : extension == ".stl"
                                       ? stl_of(shape)
                                       : throw std::invalid_argument("FILE must end in .obj, .ply or .stl");
-        const std::filesystem::path partial = file.string() + ".partial";  // renamed once whole
+        partial = file.string() + ".partial";  // linked into place once whole: never over a file
         std::ofstream(partial, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
         if (std::filesystem::file_size(partial) != bytes.size())
             throw std::runtime_error("could not write " + partial.string());
-        std::filesystem::rename(partial, file);
+        std::filesystem::create_hard_link(partial, file);
+        std::filesystem::remove(partial);
         std::printf("%s: %zu vertices, %zu triangles, %zu bytes\n", file.c_str(), shape.vertices.size(),
                     shape.triangles.size(), bytes.size());
     } catch (const std::exception& problem) {
+        std::error_code ignored;
+        if (!partial.empty()) std::filesystem::remove(partial, ignored);
         std::fprintf(stderr, "model-gen: %s\n", problem.what());
         return 1;
     }

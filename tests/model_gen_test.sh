@@ -45,5 +45,9 @@ refused "model-gen: an STL holds triangles, not a point cloud" cloud 10 "$work/c
 refused "model-gen: no shape 'cube': grid, sphere or cloud" cube 10 "$work/cube.obj"
 refused "model-gen: COUNT must be a whole number from 2 to 100000000, got '1e3'" grid 1e3 "$work/big.obj"
 refused "model-gen: FILE must end in .obj, .ply or .stl" grid 10 "$work/grid.gltf"
+code=0
+"$generate" grid >/dev/null 2>&1 || code=$?
+check "exit of model-gen with one word (usage)" 2 "$code"
+check "exit of model-gen --help" 0 "$("$generate" --help >/dev/null && echo 0)"
 check "nothing left half written" "cloud.obj cloud.ply grid.obj sphere.ply sphere.stl" "$(cd "$work" && echo *)"
 exit $status

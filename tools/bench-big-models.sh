@@ -58,7 +58,7 @@ done
 
 out="$(mktemp -d)"
 trap 'rm -rf "$out"' EXIT
-# One render: "wall_s peak_MB read prepare draw encode" (stage wall seconds, from --timings,
+# One render: "wall_s peak_MiB read prepare draw encode" (stage wall seconds, from --timings,
 # which a baseline before 0.1.40 lacks: it is asked of this build only).
 measure() {  # binary model [--timings]
     local log="$out/log" picture="$out/picture.webp"
@@ -79,10 +79,10 @@ median() { sort -n | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
 echo "render --threads $threads, $rounds rounds, $(date -u +%Y-%m-%d), $(nproc) cores"
 echo
 if [ -n "$baseline" ]; then
-    echo "| model | file | baseline wall, s | now | baseline peak, MB | now | read | prepare | draw | encode |"
+    echo "| model | file | baseline wall, s | now | baseline peak, MiB | now | read | prepare | draw | encode |"
     echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
 else
-    echo "| model | file | wall, s | peak, MB | read | prepare | draw | encode |"
+    echo "| model | file | wall, s | peak, MiB | read | prepare | draw | encode |"
     echo "|---|---:|---:|---:|---:|---:|---:|---:|"
 fi
 for model in "${models[@]}"; do

@@ -110,6 +110,7 @@ ModelStage::ModelStage(std::shared_ptr<const Model> model, const std::shared_ptr
         // A mesh the stage owns and draws as it is moves over, its positions moved in place.
         const bool as_read = owned && !both && !needs_tangents(part);
         auto mesh = std::make_shared<Mesh>(as_read ? std::move(owned->parts[i].mesh) : staged_mesh(part, both));
+        if (owned) owned->parts[i].mesh = {};  // the staged copy is all the stage draws
         for (glm::vec3& p : mesh->positions) p = glm::vec3(unit_from_world(glm::dvec3(p)));
         meshes_.push_back(std::move(mesh));
     }

@@ -54,7 +54,7 @@ public:
     // along `up`, a lens out of range, non-finite numbers) or a model too large to frame.
     ModelStage(std::shared_ptr<const Model> model, const ModelView& view, int width, int height);
     // The same, taking the model: meshes drawn as they are move into the stage rather than being
-    // copied, so a model of millions of points is held once.
+    // copied, so a model of millions of points is held once. The model is taken even if this throws.
     ModelStage(Model&& model, const ModelView& view, int width, int height);
 
     // Draws the model turned by `turn` radians about the up axis through the target: a
