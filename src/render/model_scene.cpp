@@ -46,9 +46,6 @@ std::string shown(double value) {
     return text;
 }
 
-// The mesh the stage draws for the part, copied once (a model of millions of points is large),
-// with tangents made from its texture coordinates where its normal map needs them and the file
-// gave none, for the whole part or for some vertices (doc/conventions.md#normal-maps).
 bool lacks_tangent(const glm::vec4& t) { return glm::vec3(t) == glm::vec3(0.0F); }
 
 // Whether the part's normal map needs tangents its mesh lacks, for some vertices or all.
@@ -59,6 +56,9 @@ bool needs_tangents(const ModelPart& part) {
             std::any_of(given.tangents.begin(), given.tangents.end(), lacks_tangent));
 }
 
+// The mesh the stage draws for the part, copied once (a model of millions of points is large),
+// with tangents made from its texture coordinates where its normal map needs them and the file
+// gave none, for the whole part or for some vertices (doc/conventions.md#normal-maps).
 Mesh staged_mesh(const ModelPart& part, bool both) {
     const Mesh& given = part.mesh;
     if (!needs_tangents(part)) return both ? both_sides(given) : given;
