@@ -74,6 +74,7 @@ measure() {  # binary model [--timings]
 }
 
 range() { sort -n | awk 'NR == 1 { low = $1 } { high = $1 } END { printf(low == high ? "%s" : "%s–%s", low, high) }'; }
+column() { awk -v k="$2" '{ print $k }' "$out/$1"; }  # column FILE K: field K of each measurement
 median() { sort -n | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
 
 echo "render --threads $threads, $rounds rounds, $(date -u +%Y-%m-%d), $(nproc) cores"
@@ -91,7 +92,6 @@ for model in "${models[@]}"; do
         [ -z "$baseline" ] || measure "$baseline" "$model" >>"$out/base"
         measure "$render" "$model" --timings >>"$out/now"
     done
-    column() { awk -v k="$2" '{ print $k }' "$out/$1"; }
     megabytes=$(($(stat -c %s "$model") / 1000000))
     stages="$(column now 3 | median) | $(column now 4 | median) | $(column now 5 | median) | $(column now 6 | median)"
     if [ -n "$baseline" ]; then

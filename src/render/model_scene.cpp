@@ -59,9 +59,10 @@ bool needs_tangents(const ModelPart& part) {
 // The mesh the stage draws for the part, copied once (a model of millions of points is large),
 // with tangents made from its texture coordinates where its normal map needs them and the file
 // gave none, for the whole part or for some vertices (doc/conventions.md#normal-maps).
-Mesh staged_mesh(const ModelPart& part, bool both) {
+// `tangents` is needs_tangents(part), which the caller has already worked out.
+Mesh staged_mesh(const ModelPart& part, bool both, bool tangents) {
     const Mesh& given = part.mesh;
-    if (!needs_tangents(part)) return both ? both_sides(given) : given;
+    if (!tangents) return both ? both_sides(given) : given;
     const bool whole = given.tangents.size() == given.positions.size();
     Mesh mesh = given;
     const std::vector<glm::vec4> made = tangents_from_uvs(mesh);
@@ -108,8 +109,9 @@ ModelStage::ModelStage(std::shared_ptr<const Model> model, const std::shared_ptr
         const ModelPart& part = model_->parts[i];
         const bool both = view.cull == Culling::none || (view.cull == Culling::automatic && open[i]);
         // A mesh the stage owns and draws as it is moves over, its positions moved in place.
-        const bool as_read = owned && !both && !needs_tangents(part);
-        auto mesh = std::make_shared<Mesh>(as_read ? std::move(owned->parts[i].mesh) : staged_mesh(part, both));
+        const bool tangents = needs_tangents(part), as_read = owned && !both && !tangents;
+        auto mesh =
+            std::make_shared<Mesh>(as_read ? std::move(owned->parts[i].mesh) : staged_mesh(part, both, tangents));
         if (owned) owned->parts[i].mesh = {};  // the staged copy is all the stage draws
         for (glm::vec3& p : mesh->positions) p = glm::vec3(unit_from_world(glm::dvec3(p)));
         meshes_.push_back(std::move(mesh));
