@@ -188,6 +188,7 @@ void settle_arguments(const CLI::App& app, RenderArguments& arguments, const ras
     RenderPlan& plan = arguments.plan;
     raster::ModelView& view = plan.view;
     plan.obj.limits.service = &readers;
+    plan.obj.threads = static_cast<std::size_t>(options.threads_in_use());
     if (arguments.up) view.up = *arguments.up;
     view.light = arguments.light;
     if (arguments.background == "none") {

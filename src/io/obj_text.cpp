@@ -3,7 +3,6 @@
 #include <raster/io/obj_file.hpp>
 
 #include <algorithm>
-#include <charconv>
 #include <string_view>
 #include <utility>
 
@@ -37,16 +36,6 @@ InputRules text_rules(std::string role, std::string expected, const std::filesys
 
 void note_named(std::vector<InputRecord>& sources, const std::filesystem::path& path, const char* role) {
     if (FileIdentity identity; identity_of(path, identity)) sources.push_back({path, identity, role});
-}
-
-// tinyobjloader fails a load only on an index it cannot read in a statement the survey does not
-// check (vw): said in raster's words, with the line where its message has one.
-std::runtime_error load_failure(const std::string& err, const std::string& name) {
-    const std::size_t at = err.find("line ");
-    std::size_t line = 0;
-    if (at != std::string::npos) std::from_chars(err.data() + at + 5, err.data() + err.size(), line);
-    if (line == 0) return std::runtime_error(name + ": not an OBJ model raster can read");
-    return std::runtime_error(name + ":" + std::to_string(line) + ": a statement with an index raster cannot read");
 }
 
 [[noreturn]] void rethrow_named(const std::string& name) {

@@ -17,9 +17,6 @@ namespace raster::detail {
 // Notes a file the model names, whether or not it can be read: no output may replace it.
 void note_named(std::vector<InputRecord>& sources, const std::filesystem::path& path, const char* role);
 
-// tinyobjloader's error text `err` as one line of raster's, with its line where it gives one.
-[[nodiscard]] std::runtime_error load_failure(const std::string& err, const std::string& name);
-
 // Rethrows the exception being handled as one line that begins with the file's name.
 [[noreturn]] void rethrow_named(const std::string& name);
 

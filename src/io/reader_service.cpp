@@ -127,6 +127,8 @@ bool receive(int socket, std::vector<std::uint8_t>& message, int timeout_ms, det
             options.load_textures = in.value<std::uint8_t>() != 0;
             options.max_texels = in.value<std::size_t>();
             options.max_line_bytes = in.value<std::size_t>();
+            options.threads = in.value<std::size_t>();
+            options.range_bytes = in.value<std::size_t>();
             options.confine = in.text();
             options.limits.max_memory = in.value<std::uint64_t>();
             options.limits.max_seconds = in.value<double>();
@@ -186,6 +188,8 @@ Model ReaderService::read(const std::filesystem::path& path, const ObjOptions& o
     out.value(static_cast<std::uint8_t>(options.load_textures));
     out.value(options.max_texels);
     out.value(options.max_line_bytes);
+    out.value(options.threads);
+    out.value(options.range_bytes);
     out.text(options.confine.string());
     out.value(options.limits.max_memory);
     out.value(options.limits.max_seconds);

@@ -27,6 +27,10 @@ struct ObjOptions {
     bool load_textures = true;
     std::size_t max_texels = kMaxTextureTexels;
     std::size_t max_line_bytes = kMaxObjLineBytes;  // the fuzzer lowers it to reach the refusal
+    // Threads a reader may use (0: available_cores()): an OBJ is read in byte ranges at once,
+    // each at least `range_bytes` long (tests and the fuzzer lower it to split small files).
+    std::size_t threads = 0;
+    std::size_t range_bytes = std::size_t{1} << 20;
     // When set (by confinement_root), nothing outside this directory is read: what the model
     // names there is missing, with a warning.
     std::filesystem::path confine{};

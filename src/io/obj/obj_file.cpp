@@ -1,21 +1,24 @@
-// OBJ models through tinyobjloader, which only this folder includes; stays whole as the one path from text to parts.
+// OBJ models read by raster's own reader, their materials by tinyobjloader's MTL reader (only this folder
+// includes it); stays whole as the one path from text to parts.
 #include <raster/io/obj_file.hpp>
 
-#include "geometry/polygon_triangles.hpp"
-#include "io/input_stream.hpp"
 #include "io/model_builder.hpp"
 #include "io/obj/material_libraries.hpp"
 #include "io/obj/mtl_material.hpp"
+#include "io/obj/obj_pieces.hpp"
 #include "io/obj_survey.hpp"
 #include "io/obj_text.hpp"
 
 #include <raster/io/input_file.hpp>
+#include <raster/platform/cores.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <optional>
-#include <sstream>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <unordered_set>
@@ -24,7 +27,6 @@
 
 namespace raster {
 
-using detail::load_failure;
 using detail::MaterialLibraries;
 using detail::MtlMaterials;
 using detail::rethrow_named;
@@ -37,151 +39,117 @@ struct BadModel : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-// Checks one index of a face corner, point or line vertex against the count of what it names.
-std::int64_t checked(int index, std::size_t count, const char* what, const char* statement, std::size_t number,
-                     bool optional) {
-    if (index < 0 && optional) return detail::kNoIndex;
-    if (index < 0 || static_cast<std::size_t>(index) >= count) {
-        throw BadModel(std::string(statement) + " " + std::to_string(number) + " names " + what + " " +
-                       std::to_string(index + 1) + ", but the file has " + std::to_string(count));
-    }
-    return index;
-}
-
-// An OBJ colour channel (sRGB, as MeshLab and others write it) in linear light, clamped to
-// [0, 1], white where it is not a number (doc/conventions.md#vertex-colours).
-float linear_obj_channel(tinyobj::real_t written) {
-    const float c = std::isfinite(written) ? std::clamp(static_cast<float>(written), 0.0F, 1.0F) : 1.0F;
-    return static_cast<float>(linear_from_srgb_channel(c));
-}
-
-// Positions and normals mirrored into raster's left-handed world; each face split into exactly
-// its own area and every piece re-wound to match.
-detail::PolygonSoup soup_from(const tinyobj::attrib_t& attrib, const std::vector<tinyobj::shape_t>& shapes,
-                              const detail::ObjSurvey& survey, std::size_t& skipped) {
-    detail::PolygonSoup soup;
-    for (std::size_t i = 0; i + 2 < attrib.vertices.size(); i += 3) {
-        soup.positions.emplace_back(attrib.vertices[i], attrib.vertices[i + 1], -attrib.vertices[i + 2]);
-    }
-    for (std::size_t i = 0; i + 2 < attrib.normals.size(); i += 3) {
-        soup.normals.emplace_back(attrib.normals[i], attrib.normals[i + 1], -attrib.normals[i + 2]);
-    }
-    for (std::size_t i = 0; i + 1 < attrib.texcoords.size(); i += 2)
-        soup.uvs.emplace_back(attrib.texcoords[i], attrib.texcoords[i + 1]);
-    // tinyobjloader keeps colours only when every v gives them (doc/conventions.md#vertex-colours).
-    const bool coloured = attrib.colors.size() == attrib.vertices.size();
-    if (coloured) {
-        for (std::size_t i = 0; i + 2 < attrib.colors.size(); i += 3) {
-            soup.colours.push_back({linear_obj_channel(attrib.colors[i]), linear_obj_channel(attrib.colors[i + 1]),
-                                    linear_obj_channel(attrib.colors[i + 2])});
+// What the pieces found besides geometry, with the warnings that say it once per cause.
+detail::ObjSurvey survey_of(const std::vector<detail::ObjPiece>& pieces, const std::string& name) {
+    static constexpr std::array<const char*, 3> kKindName = {"vertex", "texture coordinate", "normal"};
+    static constexpr std::array<const char*, 3> kKindPlural = {"vertices", "texture coordinates", "normals"};
+    detail::ObjSurvey survey;
+    std::size_t empty_library_line = 0, empty_libraries = 0;
+    std::array<const detail::BadNumber*, 3> first_bad{};
+    std::array<std::size_t, 3> bad{};
+    for (const detail::ObjPiece& piece : pieces) {
+        for (std::size_t k = 0; k < 3; ++k) {
+            survey.defined[k] += piece.counts.defined[k];
+            if (first_bad[k] == nullptr && !piece.bad[k].empty()) first_bad[k] = &piece.bad[k].front();
+            bad[k] += piece.bad[k].size();
+        }
+        survey.faces += piece.faces;
+        survey.skipped_faces += piece.skipped_faces;
+        survey.points += piece.points.size();
+        survey.segments += piece.segment_count;
+        survey.coloured_vertices += piece.coloured_vertices;
+        if (survey.short_line == 0) survey.short_line = piece.short_line;
+        if (empty_libraries == 0) empty_library_line = piece.empty_library_line;
+        empty_libraries += piece.empty_libraries;
+        for (const detail::MaterialStatement& statement : piece.materials) {
+            if (statement.library) {
+                for (const std::string& library : statement.names)
+                    survey.library_lines.emplace(library, statement.line);
+            } else if (!statement.names.empty() &&
+                       survey.material_lines.emplace(statement.names[0], statement.line).second) {
+                survey.materials.push_back({statement.names[0], statement.line});
+            }
         }
     }
-    std::size_t point = 0, line = 0;
-    const auto corner_of = [&](const tinyobj::index_t& index, const char* statement, std::size_t number) {
-        const detail::SoupCorner corner{
-            checked(index.vertex_index, soup.positions.size(), "vertex", statement, number, false),
-            checked(index.normal_index, soup.normals.size(), "normal", statement, number, true),
-            checked(index.texcoord_index, soup.uvs.size(), "texture coordinate", statement, number, true),
-            coloured ? checked(index.vertex_index, soup.colours.size(), "colour", statement, number, false)
-                     : detail::kNoIndex};
-        const glm::vec3& p = soup.positions[static_cast<std::size_t>(corner.position)];
-        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {  // the survey refuses these first
-            throw BadModel("vertex " + std::to_string(corner.position + 1) + " is not a finite point");
-        }
-        return corner;
-    };
-    std::size_t face = 0;
-    auto large = survey.large_faces.begin();
-    std::vector<detail::SoupCorner> corners;
-    std::vector<glm::dvec3> outline;
-    for (const tinyobj::shape_t& shape : shapes) {
-        std::size_t next = 0;
-        for (std::size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f, ++face) {
-            std::size_t count = shape.mesh.num_face_vertices[f];
-            if (large != survey.large_faces.end() && large->first == face)
-                count = (large++)->second;  // the survey counted them whole
-            const std::size_t first = next;
-            next += count;
-            if (next > shape.mesh.indices.size()) throw BadModel("face " + std::to_string(face + 1) + " is cut short");
-            if (count < 3) {  // tinyobjloader drops these itself; kept as a guard
-                ++skipped;
+    if (empty_libraries > 0) {
+        survey.warnings.push_back(
+            name + ":" + std::to_string(empty_library_line) + ": mtllib names no file" +
+            (empty_libraries > 1 ? " (nor do " + std::to_string(empty_libraries - 1) + " more mtllib lines)" : ""));
+    }
+    if (survey.short_line != 0)
+        survey.warnings.push_back(name + ":" + std::to_string(survey.short_line) +
+                                  ": a line (l) of fewer than 2 vertices draws nothing; skipped");
+    for (std::size_t k = 0; k < 3; ++k) {
+        if (first_bad[k] == nullptr) continue;  // a face using one would have thrown
+        const std::size_t more = bad[k] - 1;
+        survey.warnings.push_back(
+            name + ":" + std::to_string(first_bad[k]->line) + ": " + kKindName[k] + " " +
+            std::to_string(first_bad[k]->index + 1) + " has " + first_bad[k]->problem + "; no face uses it" +
+            (more > 0 ? " (nor " + std::to_string(more) + " more such " + kKindPlural[k] + ")" : ""));
+    }
+    return survey;
+}
+
+// The material in force at each usemtl, libraries read as their mtllib lines come, in file order.
+std::vector<detail::PieceMaterials> materials_in_force(const std::vector<detail::ObjPiece>& pieces,
+                                                       MaterialLibraries& libraries,
+                                                       std::vector<tinyobj::material_t>& materials) {
+    std::map<std::string, int> ids;
+    std::set<std::string> read;
+    std::vector<detail::PieceMaterials> in_force(pieces.size());
+    int current = -1;
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+        in_force[i].entering = current;
+        for (const detail::MaterialStatement& statement : pieces[i].materials) {
+            if (!statement.library) {
+                const auto found = statement.names.empty() ? ids.end() : ids.find(statement.names[0]);
+                current = found == ids.end() ? -1 : found->second;
+                in_force[i].by_statement.push_back(current);
                 continue;
             }
-            corners.clear();
-            outline.clear();
-            for (std::size_t k = first; k < next; ++k) {
-                corners.push_back(corner_of(shape.mesh.indices[k], "face", face + 1));
-                outline.emplace_back(soup.positions[static_cast<std::size_t>(corners.back().position)]);
-            }
-            const int material = f < shape.mesh.material_ids.size() ? shape.mesh.material_ids[f] : -1;
-            // Each piece turned from OBJ's counter-clockwise to raster's clockwise order.
-            for (const auto& [a, b, c] : detail::triangles_of_polygon(outline)) {
-                soup.triangles.push_back({{corners[a], corners[c], corners[b]}, material});
+            in_force[i].by_statement.push_back(-1);
+            // The first of the named libraries that reads, as tinyobjloader takes them.
+            for (const std::string& library : statement.names) {
+                if (read.contains(library)) continue;
+                if (libraries(library, &materials, &ids, nullptr, nullptr)) {
+                    read.insert(library);
+                    break;
+                }
             }
         }
-        if (next != shape.mesh.indices.size()) throw BadModel("its faces and their corners do not line up");
-        // OBJ gives points and lines no material: they take the default (doc/conventions.md#points-and-lines).
-        for (const tinyobj::index_t& index : shape.points.indices)
-            soup.points.push_back({corner_of(index, "point", ++point), -1});
-        std::size_t at = 0;
-        for (const int count : shape.lines.num_line_vertices) {
-            ++line;
-            if (count < 0 || static_cast<std::size_t>(count) > shape.lines.indices.size() - at)
-                throw BadModel("line " + std::to_string(line) + " is cut short");
-            for (std::size_t k = at; k + 1 < at + static_cast<std::size_t>(count); ++k) {
-                soup.segments.push_back({{corner_of(shape.lines.indices[k], "line", line),
-                                          corner_of(shape.lines.indices[k + 1], "line", line)},
-                                         -1});
-            }
-            at += static_cast<std::size_t>(count);
-        }
     }
-    if (survey.faces == 0 && survey.skipped_faces == 0 && survey.points == 0 && survey.segments == 0 &&
-        survey.short_line == 0) {
-        detail::add_every_vertex_as_a_point(soup);  // a point cloud, as MeshLab writes one
-    }
-    return soup;
+    return in_force;
 }
 
-// tinyobjloader must have read the statements the survey checked, no more and no fewer: a
-// disagreement would leave a number unchecked.
-void check_same_reading(const tinyobj::attrib_t& attrib, const detail::ObjSurvey& survey) {
-    const std::array<std::size_t, 3> read = {attrib.vertices.size() / 3, attrib.texcoords.size() / 2,
-                                             attrib.normals.size() / 3};
-    if (read != survey.defined) {
-        throw std::runtime_error("the file's v, vt and vn lines were counted as " + std::to_string(survey.defined[0]) +
-                                 ", " + std::to_string(survey.defined[1]) + " and " +
-                                 std::to_string(survey.defined[2]) + " by one reading and " + std::to_string(read[0]) +
-                                 ", " + std::to_string(read[1]) + " and " + std::to_string(read[2]) +
-                                 " by the other; please report this file");
-    }
-}
-
-Model model_from(std::istream& obj, const std::string& name, const detail::ObjSurvey& survey,
-                 MaterialLibraries& libraries, const ObjOptions& options, bool load_maps) {
-    tinyobj::attrib_t attrib;
-    std::vector<tinyobj::shape_t> shapes;
+Model model_from(std::string_view text, const std::string& name, const std::filesystem::path& directory,
+                 std::optional<std::string_view> mtl, const ObjOptions& options, bool load_maps) {
+    const std::size_t threads = options.threads > 0 ? options.threads : static_cast<std::size_t>(available_cores());
+    detail::ObjPieces read =
+        detail::read_obj_pieces(text, name, kMaxFaceCorners, options.max_line_bytes, threads, options.range_bytes);
+    const detail::ObjSurvey survey = survey_of(read.pieces, name);
+    MaterialLibraries libraries(directory, mtl, name, survey, options);
     std::vector<tinyobj::material_t> materials;
-    std::string ignored_warnings, err;  // the survey has said what matters, in raster's words
-    if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &ignored_warnings, &err, &obj, &libraries, false, false)) {
-        throw load_failure(err, name);
-    }
-    check_same_reading(attrib, survey);
+    const std::vector<detail::PieceMaterials> in_force = materials_in_force(read.pieces, libraries, materials);
     Model model;
     model.warnings = survey.warnings;
     for (std::string& warning : libraries.warnings()) model.warnings.push_back(std::move(warning));
     detail::warn_of_missing_materials(model.warnings, name, survey, materials, libraries.any_failed());
     model.sources = std::move(libraries.sources());
-    std::size_t skipped = survey.skipped_faces;
-    std::size_t dropped_again = 0;
-    const detail::PolygonSoup soup = soup_from(attrib, shapes, survey, dropped_again);
-    skipped = std::max(skipped, dropped_again);
-    if (skipped > 0)
-        model.warnings.push_back(name + ": skipped " + std::to_string(skipped) + " faces with fewer than 3 corners");
+    detail::PolygonSoup soup = detail::join_obj_pieces(read.pieces, in_force, threads);
+    if (survey.skipped_faces > 0) {
+        model.warnings.push_back(name + ": skipped " + std::to_string(survey.skipped_faces) +
+                                 " faces with fewer than 3 corners");
+    }
     if (survey.coloured_vertices > 0 && soup.colours.empty()) {
         model.warnings.push_back(name + ": " + std::to_string(survey.coloured_vertices) + " of " +
                                  std::to_string(survey.defined[0]) +
                                  " vertices give a colour, and OBJ's colours are all or none; drawing none");
+    }
+    if (survey.faces == 0 && survey.skipped_faces == 0 && survey.points == 0 && survey.segments == 0 &&
+        survey.short_line == 0) {
+        // A normal that is not a number (warned of) lights no point: zero, as a point without one.
+        for (glm::vec3& normal : soup.normals) normal = std::isnan(normal.x) ? glm::vec3(0.0F) : normal;
+        detail::add_every_vertex_as_a_point(soup);  // a point cloud, as MeshLab writes one
     }
     MtlMaterials dresser(name, options, load_maps, model);
     for (auto& [id, mesh] : detail::meshes_by_material(soup, options.crease_degrees)) {
@@ -224,13 +192,9 @@ Model read_obj(const std::filesystem::path& path, const ObjOptions& options) {
     const std::string name = printable(path.string());
     try {
         InputFile file(path, text_rules("model", "a Wavefront OBJ text file", options.confine));
-        const detail::ObjSurvey survey = detail::survey_obj(name, kMaxFaceCorners, [&](const auto& visit) {
-            for_each_line(file, name, options.max_line_bytes, visit);
-        });
-        detail::InputStreamBuf buffer(file);
-        std::istream in(&buffer);
-        MaterialLibraries libraries(path.parent_path(), std::nullopt, name, survey, options);
-        Model model = model_from(in, name, survey, libraries, options, options.load_textures);
+        const std::vector<std::uint8_t> bytes = file.read_all();
+        const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+        Model model = model_from(text, name, path.parent_path(), std::nullopt, options, options.load_textures);
         model.sources.insert(model.sources.begin(), file.record());
         return model;
     } catch (const std::runtime_error&) {
@@ -241,12 +205,7 @@ Model read_obj(const std::filesystem::path& path, const ObjOptions& options) {
 Model parse_obj(std::string_view obj, std::string_view mtl, ObjOptions options) {
     const std::string name = "<memory>";
     try {
-        if (obj.starts_with("\xEF\xBB\xBF")) obj.remove_prefix(3);  // a UTF-8 byte order mark, as a file's is skipped
-        const detail::ObjSurvey survey = detail::survey_obj(
-            name, kMaxFaceCorners, [&](const auto& visit) { for_each_line(obj, name, options.max_line_bytes, visit); });
-        std::istringstream in{std::string(obj)};
-        MaterialLibraries libraries(".", mtl, name, survey, options);
-        return model_from(in, name, survey, libraries, options, false);
+        return model_from(obj, name, ".", mtl, options, false);
     } catch (const std::runtime_error&) {
         rethrow_named(name);
     }

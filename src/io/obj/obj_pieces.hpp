@@ -1,0 +1,42 @@
+#pragma once
+
+#include "io/model_builder.hpp"
+#include "io/obj/obj_piece.hpp"
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+// An OBJ text split into byte ranges at line ends, each range read on a core of its own, and the
+// pieces joined in file order into one soup.
+namespace raster::detail {
+
+struct ObjPieces {
+    std::vector<ObjRange> ranges;
+    std::vector<ObjPiece> pieces;
+};
+
+// Reads the text in up to `threads` ranges split at line ends, each at least `range_bytes` long; throws
+// std::runtime_error "NAME:LINE: ..." for the first problem in file order, as one reading from the start would.
+[[nodiscard]] ObjPieces read_obj_pieces(std::string_view text, const std::string& name, std::size_t max_corners,
+                                        std::size_t max_line_bytes, std::size_t threads, std::size_t range_bytes);
+
+// The material each piece's statements put in force (-1 for mtllib and the default), and the one in force where it
+// starts.
+struct PieceMaterials {
+    std::vector<int> by_statement;
+    int entering = -1;
+};
+
+// The pieces in file order as one soup (emptied as they are joined): polygons split into exactly
+// their own area, materials resolved, colours kept only when every vertex gives one.
+[[nodiscard]] PolygonSoup join_obj_pieces(std::vector<ObjPiece>& pieces, const std::vector<PieceMaterials>& materials,
+                                          std::size_t threads);
+
+// Calls `work(i)` for each i below `count`, on up to `threads` threads at once; rethrows the
+// exception of the lowest i that threw.
+void for_each_index(std::size_t count, std::size_t threads, const std::function<void(std::size_t)>& work);
+
+}  // namespace raster::detail
