@@ -81,7 +81,7 @@ void add_every_vertex_as_a_point(PolygonSoup& soup) {
     for (std::size_t v = 0; v < soup.positions.size(); ++v) {
         const glm::vec3& p = soup.positions[v];
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) continue;
-        const auto at = static_cast<std::int64_t>(v);
+        const auto at = static_cast<std::uint32_t>(v);  // fewer than kMaxSoupVertices, as every reader checks
         soup.points.push_back({{at, paired ? at : kNoIndex, kNoIndex, coloured ? at : kNoIndex}, -1});
     }
 }
@@ -89,12 +89,13 @@ void add_every_vertex_as_a_point(PolygonSoup& soup) {
 std::vector<std::pair<int, Mesh>> meshes_by_material(const PolygonSoup& soup, double crease_degrees) {
     // Facet normals, and the facets around each position (in facet order, counted then filled,
     // with no list allocated for each position), for the normals the file lacks.
-    std::vector<glm::dvec3> weighted(soup.triangles.size());
+    std::vector<double> twice_area(soup.triangles.size());  // the area normal's length: all the smoothing weighs by
     std::vector<glm::vec3> unit(soup.triangles.size());
     std::vector<std::size_t> first_around(soup.positions.size() + 1, 0);
     for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
-        weighted[t] = area_normal(soup, soup.triangles[t]);
-        unit[t] = unit_of(weighted[t]);
+        const glm::dvec3 weighted = area_normal(soup, soup.triangles[t]);
+        twice_area[t] = glm::length(weighted);
+        unit[t] = unit_of(weighted);
         if (unit[t] == glm::vec3(0.0F)) continue;
         for (const SoupCorner& corner : soup.triangles[t].corners)
             ++first_around[static_cast<std::size_t>(corner.position) + 1];
@@ -117,8 +118,7 @@ std::vector<std::pair<int, Mesh>> meshes_by_material(const PolygonSoup& soup, do
         glm::dvec3 sum(0.0);
         for (const std::uint32_t other : neighbours) {
             // Area-weighted; in double, which float coordinates cannot overflow.
-            if (glm::dot(unit[other], unit[t]) >= cos_crease)
-                sum += glm::dvec3(unit[other]) * glm::length(weighted[other]);
+            if (glm::dot(unit[other], unit[t]) >= cos_crease) sum += glm::dvec3(unit[other]) * twice_area[other];
         }
         const glm::vec3 mean = unit_of(sum);
         return mean == glm::vec3(0.0F) ? unit[t] : mean;

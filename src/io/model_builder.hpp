@@ -13,14 +13,16 @@
 // texture coordinates, colours and tangents separately (as OBJ does), with normals made where the file has none.
 namespace raster::detail {
 
-inline constexpr std::int64_t kNoIndex = -1;
+// Indices are 32 bits, as a Mesh's are: readers refuse a file of more vertices (kMaxSoupVertices).
+inline constexpr std::uint32_t kNoIndex = 0xFFFFFFFFU;
+inline constexpr std::size_t kMaxSoupVertices = kNoIndex;
 
 struct SoupCorner {
-    std::int64_t position;
-    std::int64_t normal = kNoIndex;
-    std::int64_t uv = kNoIndex;
-    std::int64_t colour = kNoIndex;
-    std::int64_t tangent = kNoIndex;  // into PolygonSoup::tangents, in raster's world (doc/conventions.md#normal-maps)
+    std::uint32_t position;
+    std::uint32_t normal = kNoIndex;
+    std::uint32_t uv = kNoIndex;
+    std::uint32_t colour = kNoIndex;
+    std::uint32_t tangent = kNoIndex;  // into PolygonSoup::tangents, in raster's world (doc/conventions.md#normal-maps)
 };
 
 // Corners clockwise seen from outside, in raster's world; every index valid or kNoIndex.

@@ -14,9 +14,9 @@
 namespace raster::detail {
 
 struct VertexKey {
-    std::int64_t position;  // into the soup's positions: every one below the count VertexIds was made for
+    std::uint32_t position;  // into the soup's positions: every one below the count VertexIds was made for
     std::uint32_t normal_x, normal_y, normal_z;  // the normal's bits
-    std::int64_t uv, colour, tangent;
+    std::uint32_t uv, colour, tangent;
     friend bool operator==(const VertexKey&, const VertexKey&) = default;
 };
 

@@ -16,7 +16,10 @@ using raster::detail::VertexKey;
 namespace {
 
 // The k-th vertex at `position`: one normal bit pattern each, as a fan's facets give its centre.
-VertexKey key_at(std::int64_t position, std::uint32_t k) { return {position, k, 7, 9, -1, -1, -1}; }
+VertexKey key_at(std::uint32_t position, std::uint32_t k) {
+    constexpr std::uint32_t kNone = raster::detail::kNoIndex;
+    return {position, k, 7, 9, kNone, kNone, kNone};
+}
 
 }  // namespace
 
@@ -56,7 +59,7 @@ TEST(VertexIds, AFanOfThousandsOfFacetsKeepsAVertexForEachNormalAtItsCentre) {
         soup.positions.emplace_back(static_cast<float>(std::cos(angle)), static_cast<float>(std::sin(angle)),
                                     static_cast<float>(0.1 * std::sin(7.0 * angle)));
     }
-    const auto corner = [](int i) { return raster::detail::SoupCorner{i, raster::detail::kNoIndex}; };
+    const auto corner = [](int i) { return raster::detail::SoupCorner{static_cast<std::uint32_t>(i)}; };
     for (int k = 0; k < facets; ++k)
         soup.triangles.push_back({{corner(0), corner(1 + (k + 1) % facets), corner(1 + k)}, 0});
     const auto meshes = raster::detail::meshes_by_material(soup, 0.0);

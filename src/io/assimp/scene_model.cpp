@@ -122,7 +122,9 @@ private:
     // Positions and normals moved by the node's matrix, then mirrored into raster's left-handed
     // world as OBJ's are; faces split into their own outline and re-wound to match.
     void add_mesh(const aiMesh& mesh, const glm::dmat4& world) {
-        const auto first = static_cast<std::int64_t>(soup_.positions.size());
+        if (soup_.positions.size() + mesh.mNumVertices >= kMaxSoupVertices)
+            throw std::runtime_error("more vertices than raster indexes in 32 bits");
+        const auto first = static_cast<std::uint32_t>(soup_.positions.size());
         const bool has_normals = mesh.mNormals != nullptr, has_uvs = mesh.mTextureCoords[0] != nullptr;
         const bool has_colours = mesh.mColors[0] != nullptr;
         const bool has_tangents = mesh.mTangents != nullptr && has_normals && has_uvs;
@@ -174,7 +176,7 @@ private:
                 throw std::runtime_error("a face names vertex " + std::to_string(index) + " of a mesh of " +
                                          std::to_string(mesh.mNumVertices));
             }
-            const std::int64_t at = first + index;
+            const std::uint32_t at = first + index;
             return SoupCorner{at, has_normals ? at : kNoIndex, has_uvs ? at : kNoIndex, has_colours ? at : kNoIndex,
                               has_tangents ? at : kNoIndex};
         };

@@ -121,21 +121,30 @@ std::vector<detail::PieceMaterials> materials_in_force(const std::vector<detail:
     return in_force;
 }
 
-Model model_from(std::string_view text, const std::string& name, const std::filesystem::path& directory,
+std::size_t threads_of(const ObjOptions& options) {
+    return options.threads > 0 ? options.threads : static_cast<std::size_t>(available_cores());
+}
+
+// The text's pieces: each holds its own values, so the text may go once they are read.
+std::vector<detail::ObjPiece> pieces_of(std::string_view text, const std::string& name, const ObjOptions& options) {
+    return detail::read_obj_pieces(text, name, kMaxFaceCorners, options.max_line_bytes, threads_of(options),
+                                   options.range_bytes)
+        .pieces;
+}
+
+Model model_from(std::vector<detail::ObjPiece> pieces, const std::string& name, const std::filesystem::path& directory,
                  std::optional<std::string_view> mtl, const ObjOptions& options, bool load_maps) {
-    const std::size_t threads = options.threads > 0 ? options.threads : static_cast<std::size_t>(available_cores());
-    detail::ObjPieces read =
-        detail::read_obj_pieces(text, name, kMaxFaceCorners, options.max_line_bytes, threads, options.range_bytes);
-    const detail::ObjSurvey survey = survey_of(read.pieces, name);
+    const std::size_t threads = threads_of(options);
+    const detail::ObjSurvey survey = survey_of(pieces, name);
     MaterialLibraries libraries(directory, mtl, name, survey, options);
     std::vector<tinyobj::material_t> materials;
-    const std::vector<detail::PieceMaterials> in_force = materials_in_force(read.pieces, libraries, materials);
+    const std::vector<detail::PieceMaterials> in_force = materials_in_force(pieces, libraries, materials);
     Model model;
     model.warnings = survey.warnings;
     for (std::string& warning : libraries.warnings()) model.warnings.push_back(std::move(warning));
     detail::warn_of_missing_materials(model.warnings, name, survey, materials, libraries.any_failed());
     model.sources = std::move(libraries.sources());
-    detail::PolygonSoup soup = detail::join_obj_pieces(read.pieces, in_force, threads);
+    detail::PolygonSoup soup = detail::join_obj_pieces(pieces, in_force, threads);
     if (survey.skipped_faces > 0) {
         model.warnings.push_back(name + ": skipped " + std::to_string(survey.skipped_faces) +
                                  " faces with fewer than 3 corners");
@@ -192,9 +201,13 @@ Model read_obj(const std::filesystem::path& path, const ObjOptions& options) {
     const std::string name = printable(path.string());
     try {
         InputFile file(path, text_rules("model", "a Wavefront OBJ text file", options.confine));
-        const std::vector<std::uint8_t> bytes = file.read_all();
-        const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
-        Model model = model_from(text, name, path.parent_path(), std::nullopt, options, options.load_textures);
+        std::vector<detail::ObjPiece> pieces;
+        {
+            const std::vector<std::uint8_t> bytes = file.read_all();
+            pieces = pieces_of({reinterpret_cast<const char*>(bytes.data()), bytes.size()}, name, options);
+        }
+        Model model =
+            model_from(std::move(pieces), name, path.parent_path(), std::nullopt, options, options.load_textures);
         model.sources.insert(model.sources.begin(), file.record());
         return model;
     } catch (const std::runtime_error&) {
@@ -205,7 +218,7 @@ Model read_obj(const std::filesystem::path& path, const ObjOptions& options) {
 Model parse_obj(std::string_view obj, std::string_view mtl, ObjOptions options) {
     const std::string name = "<memory>";
     try {
-        return model_from(obj, name, ".", mtl, options, false);
+        return model_from(pieces_of(obj, name, options), name, ".", mtl, options, false);
     } catch (const std::runtime_error&) {
         rethrow_named(name);
     }

@@ -141,7 +141,8 @@ private:
                 "only " + std::to_string(given) + " of its " + std::to_string(kNeededNumbers[kind]) + " coordinates";
         }
         const std::size_t index = range_.before.defined[kind] + piece_.counts.defined[kind]++;
-        if (index >= kObjNone) fail("more " + std::string(kKindPlural[kind]) + " than raster counts in 32 bits");
+        if (index >= kMaxSoupVertices)
+            fail("more " + std::string(kKindPlural[kind]) + " than raster counts in 32 bits");
         if (problem.empty()) return true;
         piece_.bad[kind].push_back({index, line_, std::move(problem)});
         return false;

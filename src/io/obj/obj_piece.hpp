@@ -38,13 +38,11 @@ struct MaterialStatement {
     std::size_t line;                // in the file
 };
 
-// A corner as the file gives it: indices from 0 over the whole file; kObjNone where it names none. A file of at most
-// kMaxModelFileBytes holds fewer vertices than 32 bits count, and the reader refuses more.
-inline constexpr std::uint32_t kObjNone = 0xFFFFFFFF;
+// A corner as the file gives it: indices from 0 over the whole file; kNoIndex where it names none.
 struct ObjCorner {
     std::uint32_t position = 0;
-    std::uint32_t uv = kObjNone;
-    std::uint32_t normal = kObjNone;
+    std::uint32_t uv = kNoIndex;
+    std::uint32_t normal = kNoIndex;
 };
 
 // A triangle of corners clockwise; its material is the ordinal of the piece's usemtl in force,

@@ -121,9 +121,7 @@ PolygonSoup join_obj_pieces(std::vector<ObjPiece>& pieces, const std::vector<Pie
         piece.colours = {};
     }
     const auto finished = [&](const ObjCorner& read) {
-        const auto index = [](std::uint32_t i) { return i == kObjNone ? kNoIndex : static_cast<std::int64_t>(i); };
-        const auto position = static_cast<std::int64_t>(read.position);
-        return SoupCorner{position, index(read.normal), index(read.uv), all_coloured ? position : kNoIndex};
+        return SoupCorner{read.position, read.normal, read.uv, all_coloured ? read.position : kNoIndex};
     };
     soup.triangles.resize(triangles);
     for_each_index(pieces.size(), threads, [&](std::size_t i) {

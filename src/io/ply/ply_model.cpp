@@ -70,8 +70,9 @@ void add_faces(PlyBody& body, const std::string& name, double crease_degrees, Mo
     soup.uvs = std::move(body.uvs);
     soup.colours = std::move(body.colours);
     soup.alphas = std::move(body.alphas);
-    const auto corner_at = [&](std::uint32_t index) {
-        const auto at = static_cast<std::int64_t>(index);
+    if (soup.positions.size() >= kMaxSoupVertices)
+        throw std::runtime_error("more vertices than raster indexes in 32 bits");
+    const auto corner_at = [&](std::uint32_t at) {
         return SoupCorner{at, normals ? at : kNoIndex, uvs ? at : kNoIndex, colours ? at : kNoIndex, kNoIndex};
     };
     const auto drawable = [&](const SoupCorner& corner) {
