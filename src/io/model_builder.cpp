@@ -1,8 +1,10 @@
 #include "io/model_builder.hpp"
 
+#include "io/for_each_index.hpp"
 #include "io/vertex_ids.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <map>
@@ -29,6 +31,12 @@ glm::vec3 unit_of(glm::dvec3 v) {
     if (!(length > 0.0) || !std::isfinite(length)) return glm::vec3(0.0F);
     return glm::vec3(v / length);
 }
+
+// Triangles a thread takes at once, and blocks whose corner normals are held before their vertices are found.
+constexpr std::size_t kBlock = std::size_t{1} << 14;
+constexpr std::size_t kBlocksAtOnce = 16;
+
+std::size_t blocks_of(std::size_t triangles) { return (triangles + kBlock - 1) / kBlock; }
 
 // Beyond this many facets around one position, its corners keep their facets' normals: the
 // smoothing compares every pair, and a fan of thousands would take quadratic time.
@@ -86,16 +94,22 @@ void add_every_vertex_as_a_point(PolygonSoup& soup) {
     }
 }
 
-std::vector<std::pair<int, Mesh>> meshes_by_material(const PolygonSoup& soup, double crease_degrees) {
+std::vector<std::pair<int, Mesh>> meshes_by_material(const PolygonSoup& soup, double crease_degrees,
+                                                     std::size_t threads) {
     // Facet normals, and the facets around each position (in facet order, counted then filled,
     // with no list allocated for each position), for the normals the file lacks.
-    std::vector<double> twice_area(soup.triangles.size());  // the area normal's length: all the smoothing weighs by
-    std::vector<glm::vec3> unit(soup.triangles.size());
+    const std::size_t triangles = soup.triangles.size();
+    std::vector<double> twice_area(triangles);  // the area normal's length: all the smoothing weighs by
+    std::vector<glm::vec3> unit(triangles);
+    for_each_index(blocks_of(triangles), threads, [&](std::size_t block) {
+        for (std::size_t t = block * kBlock; t < std::min(triangles, (block + 1) * kBlock); ++t) {
+            const glm::dvec3 weighted = area_normal(soup, soup.triangles[t]);
+            twice_area[t] = glm::length(weighted);
+            unit[t] = unit_of(weighted);
+        }
+    });
     std::vector<std::size_t> first_around(soup.positions.size() + 1, 0);
-    for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
-        const glm::dvec3 weighted = area_normal(soup, soup.triangles[t]);
-        twice_area[t] = glm::length(weighted);
-        unit[t] = unit_of(weighted);
+    for (std::size_t t = 0; t < triangles; ++t) {
         if (unit[t] == glm::vec3(0.0F)) continue;
         for (const SoupCorner& corner : soup.triangles[t].corners)
             ++first_around[static_cast<std::size_t>(corner.position) + 1];
@@ -156,18 +170,30 @@ std::vector<std::pair<int, Mesh>> meshes_by_material(const PolygonSoup& soup, do
         if (added) push_vertex(*last.mesh, soup, corner, normal, last.with);
         return id;
     };
-    for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
-        if (unit[t] == glm::vec3(0.0F)) continue;  // no area: it could never cover a pixel
-        const SoupTriangle& triangle = soup.triangles[t];
-        Facet facet{{}, unit[t]};
-        for (std::size_t k = 0; k < 3; ++k) {
-            const SoupCorner& corner = triangle.corners[k];
-            glm::vec3 normal(0.0F);  // the file's, unless it has none or a zero or broken one
-            if (corner.normal != kNoIndex) normal = unit_or_zero(soup.normals[static_cast<std::size_t>(corner.normal)]);
-            if (normal == glm::vec3(0.0F)) normal = generated_normal(t, corner.position);
-            facet.corners[k] = vertex_of(corner, normal, triangle.material);
+    // Each corner's normal is worked out on every thread a block at a time; the vertices are then found in order.
+    std::vector<std::array<glm::vec3, 3>> normals(std::min(triangles, kBlock * kBlocksAtOnce));
+    for (std::size_t start = 0; start < triangles; start += normals.size()) {
+        const std::size_t end = std::min(triangles, start + normals.size());
+        for_each_index(blocks_of(end - start), threads, [&](std::size_t block) {
+            for (std::size_t t = start + block * kBlock; t < std::min(end, start + (block + 1) * kBlock); ++t) {
+                if (unit[t] == glm::vec3(0.0F)) continue;
+                for (std::size_t k = 0; k < 3; ++k) {
+                    const SoupCorner& corner = soup.triangles[t].corners[k];
+                    glm::vec3 normal(0.0F);  // the file's, unless it has none or a zero or broken one
+                    if (corner.normal != kNoIndex)
+                        normal = unit_or_zero(soup.normals[static_cast<std::size_t>(corner.normal)]);
+                    normals[t - start][k] = normal == glm::vec3(0.0F) ? generated_normal(t, corner.position) : normal;
+                }
+            }
+        });
+        for (std::size_t t = start; t < end; ++t) {
+            if (unit[t] == glm::vec3(0.0F)) continue;  // no area: it could never cover a pixel
+            const SoupTriangle& triangle = soup.triangles[t];
+            Facet facet{{}, unit[t]};
+            for (std::size_t k = 0; k < 3; ++k)
+                facet.corners[k] = vertex_of(triangle.corners[k], normals[t - start][k], triangle.material);
+            last.mesh->facets.push_back(facet);
         }
-        last.mesh->facets.push_back(facet);
     }
     // Every point is a vertex of its own: a cloud of millions would only slow a shared index down.
     // Its arrays are sized once, so that they are never copied as they grow.

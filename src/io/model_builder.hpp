@@ -3,6 +3,7 @@
 #include <raster/geometry/mesh.hpp>
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -62,6 +63,8 @@ void add_every_vertex_as_a_point(PolygonSoup& soup);
 // corner without a usable normal takes the area-weighted mean of the facet normals around its position that lie within
 // `crease_degrees` of its own facet's (0: every facet flat). Triangles with no area are dropped.
 // Points and segments keep the file's normal, or none (zero): they are drawn in their colour.
-[[nodiscard]] std::vector<std::pair<int, Mesh>> meshes_by_material(const PolygonSoup& soup, double crease_degrees);
+// The normals are worked out on up to `threads` threads; the meshes are the same for any count.
+[[nodiscard]] std::vector<std::pair<int, Mesh>> meshes_by_material(const PolygonSoup& soup, double crease_degrees,
+                                                                   std::size_t threads = 1);
 
 }  // namespace raster::detail

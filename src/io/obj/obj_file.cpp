@@ -2,6 +2,7 @@
 // includes it); stays whole as the one path from text to parts.
 #include <raster/io/obj_file.hpp>
 
+#include "io/for_each_index.hpp"
 #include "io/model_builder.hpp"
 #include "io/obj/material_libraries.hpp"
 #include "io/obj/mtl_material.hpp"
@@ -10,7 +11,6 @@
 #include "io/obj_text.hpp"
 
 #include <raster/io/input_file.hpp>
-#include <raster/platform/cores.hpp>
 
 #include <algorithm>
 #include <array>
@@ -121,20 +121,16 @@ std::vector<detail::PieceMaterials> materials_in_force(const std::vector<detail:
     return in_force;
 }
 
-std::size_t threads_of(const ObjOptions& options) {
-    return options.threads > 0 ? options.threads : static_cast<std::size_t>(available_cores());
-}
-
 // The text's pieces: each holds its own values, so the text may go once they are read.
 std::vector<detail::ObjPiece> pieces_of(std::string_view text, const std::string& name, const ObjOptions& options) {
-    return detail::read_obj_pieces(text, name, kMaxFaceCorners, options.max_line_bytes, threads_of(options),
-                                   options.range_bytes)
+    return detail::read_obj_pieces(text, name, kMaxFaceCorners, options.max_line_bytes,
+                                   detail::threads_or_cores(options.threads), options.range_bytes)
         .pieces;
 }
 
 Model model_from(std::vector<detail::ObjPiece> pieces, const std::string& name, const std::filesystem::path& directory,
                  std::optional<std::string_view> mtl, const ObjOptions& options, bool load_maps) {
-    const std::size_t threads = threads_of(options);
+    const std::size_t threads = detail::threads_or_cores(options.threads);
     const detail::ObjSurvey survey = survey_of(pieces, name);
     MaterialLibraries libraries(directory, mtl, name, survey, options);
     std::vector<tinyobj::material_t> materials;
@@ -161,7 +157,7 @@ Model model_from(std::vector<detail::ObjPiece> pieces, const std::string& name, 
         detail::add_every_vertex_as_a_point(soup);  // a point cloud, as MeshLab writes one
     }
     MtlMaterials dresser(name, options, load_maps, model);
-    for (auto& [id, mesh] : detail::meshes_by_material(soup, options.crease_degrees)) {
+    for (auto& [id, mesh] : detail::meshes_by_material(soup, options.crease_degrees, threads)) {
         ModelPart part{"", std::move(mesh), default_model_material()};
         if (id >= 0 && static_cast<std::size_t>(id) < materials.size()) {
             const auto index = static_cast<std::size_t>(id);

@@ -1,12 +1,11 @@
 #include "io/obj/obj_pieces.hpp"
 
 #include "geometry/polygon_triangles.hpp"
+#include "io/for_each_index.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <exception>
 #include <stdexcept>
-#include <thread>
 
 namespace raster::detail {
 
@@ -36,28 +35,6 @@ bool any(const BadNumbers& bad) {
 }
 
 }  // namespace
-
-void for_each_index(std::size_t count, std::size_t threads, const std::function<void(std::size_t)>& work) {
-    std::vector<std::exception_ptr> failures(count);
-    std::atomic<std::size_t> next{0};
-    const auto worker = [&] {
-        for (std::size_t i; (i = next.fetch_add(1)) < count;) {
-            try {
-                work(i);
-            } catch (...) {
-                failures[i] = std::current_exception();
-            }
-        }
-    };
-    {
-        std::vector<std::jthread> helpers;
-        for (std::size_t t = 1; t < std::min(threads, count); ++t) helpers.emplace_back(worker);
-        worker();
-    }
-    for (const std::exception_ptr& failure : failures) {
-        if (failure) std::rethrow_exception(failure);
-    }
-}
 
 ObjPieces read_obj_pieces(std::string_view text, const std::string& name, std::size_t max_corners,
                           std::size_t max_line_bytes, std::size_t threads, std::size_t range_bytes) {

@@ -4,7 +4,6 @@
 #include "io/obj/obj_piece.hpp"
 
 #include <cstddef>
-#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -34,9 +33,5 @@ struct PieceMaterials {
 // their own area, materials resolved, colours kept only when every vertex gives one.
 [[nodiscard]] PolygonSoup join_obj_pieces(std::vector<ObjPiece>& pieces, const std::vector<PieceMaterials>& materials,
                                           std::size_t threads);
-
-// Calls `work(i)` for each i below `count`, on up to `threads` threads at once; rethrows the
-// exception of the lowest i that threw.
-void for_each_index(std::size_t count, std::size_t threads, const std::function<void(std::size_t)>& work);
 
 }  // namespace raster::detail

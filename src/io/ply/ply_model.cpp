@@ -3,6 +3,7 @@
 #include "io/ply/ply_model.hpp"
 
 #include "geometry/polygon_triangles.hpp"
+#include "io/for_each_index.hpp"
 #include "io/model_builder.hpp"
 #include "io/vertex_alpha.hpp"
 
@@ -62,7 +63,7 @@ void add_cloud(PlyBody& body, Model& model, std::size_t& unplaced) {
 
 // Faces as assimp's reader gave them to raster's scene reader: one corner of one vertex, faces
 // of one corner points, of two lines, of more split into triangles re-wound for raster's world.
-void add_faces(PlyBody& body, const std::string& name, double crease_degrees, Model& model, std::size_t& unplaced) {
+void add_faces(PlyBody& body, const std::string& name, const ObjOptions& options, Model& model, std::size_t& unplaced) {
     PolygonSoup soup;
     const bool normals = !body.normals.empty(), uvs = !body.uvs.empty(), colours = !body.colours.empty();
     soup.positions = std::move(body.positions);
@@ -110,7 +111,8 @@ void add_faces(PlyBody& body, const std::string& name, double crease_degrees, Mo
         for (const auto& [a, b, c] : triangles_of_polygon(outline))
             soup.triangles.push_back({{corners[a], corners[c], corners[b]}, 0});
     }
-    for (auto& [id, mesh] : meshes_by_material(soup, crease_degrees)) model.parts.push_back(ply_part(std::move(mesh)));
+    for (auto& [id, mesh] : meshes_by_material(soup, options.crease_degrees, threads_or_cores(options.threads)))
+        model.parts.push_back(ply_part(std::move(mesh)));
 }
 
 }  // namespace
@@ -120,7 +122,7 @@ void model_from_ply(PlyBody body, const std::string& name, const ObjOptions& opt
     if (body.face_starts.empty()) {
         add_cloud(body, model, unplaced);
     } else {
-        add_faces(body, name, options.crease_degrees, model, unplaced);
+        add_faces(body, name, options, model, unplaced);
     }
     if (unplaced > 0) {
         model.warnings.push_back(name + ": skipped " + std::to_string(unplaced) +
