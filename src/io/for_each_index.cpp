@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <exception>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -24,7 +25,14 @@ void for_each_index(std::size_t count, std::size_t threads, const std::function<
     };
     {
         std::vector<std::jthread> helpers;
-        for (std::size_t t = 1; t < std::min(threads, count); ++t) helpers.emplace_back(worker);
+        helpers.reserve(std::min(threads, count));
+        for (std::size_t t = 1; t < std::min(threads, count); ++t) {
+            try {
+                helpers.emplace_back(worker);
+            } catch (const std::system_error&) {
+                break;  // no room for another thread (a reader's memory cap): the ones running do the rest
+            }
+        }
         worker();
     }
     for (const std::exception_ptr& failure : failures) {

@@ -17,6 +17,7 @@
 #include <utility>
 #include <vector>
 #include <fcntl.h>
+#include <malloc.h>
 #include <poll.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
@@ -99,6 +100,8 @@ void write_all(int descriptor, const std::vector<std::uint8_t>& bytes) {
     const auto cpu = static_cast<rlim_t>(std::ceil(max_seconds));
     const rlimit processor{cpu, cpu + 1};
     ::setrlimit(RLIMIT_CPU, &processor);
+    // A reader's threads share one heap: each arena of its own would reserve 64 MiB of the address space capped here.
+    ::mallopt(M_ARENA_MAX, 1);
     const rlim_t ceiling = address_space_now() + max_memory;
 #ifndef RASTER_ADDRESS_SANITIZER  // its shadow memory takes terabytes of address space
     const rlimit memory{ceiling, ceiling};

@@ -173,6 +173,16 @@ TEST(ObjFile, AMalformedMaterialLibraryLeavesFiniteColoursNoShininessAndNoMap) {
     }
     EXPECT_FALSE(material.shininess.has_value()) << "Ns nan is no exponent";
     EXPECT_EQ(model.parts[0].texture, nullptr);
+    EXPECT_NE(material.diffuse.r, raster::default_model_material().diffuse.r) << "a bare usemtl picks the bare newmtl";
+}
+
+TEST(ObjFile, AUsemtlWithoutANameIsTheDefaultMaterialWhereNoLibraryHasANamelessOne) {
+    const Model model = parse_obj("mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\nusemtl\nf 1 3 2\n",
+                                  "newmtl red\nKd 1 0 0\n");
+    ASSERT_EQ(model.parts.size(), 2U);
+    EXPECT_EQ(model.parts[0].material.diffuse.g, raster::default_model_material().diffuse.g);
+    EXPECT_EQ(model.parts[1].material.diffuse.r, 1.0F);
+    EXPECT_EQ(model.parts[1].material.diffuse.g, 0.0F);
 }
 
 TEST(ObjFile, TexturesResolveBesideTheMtlEvenWithSpacesAndNonAsciiNames) {

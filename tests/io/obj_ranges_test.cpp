@@ -55,7 +55,7 @@ std::string mixed_model(bool coloured) {
     }
     obj += "vn 0 0 1\r\nvn 0 1 0\n";
     for (int y = 0; y < 5; ++y) {
-        obj += y % 2 == 0 ? "usemtl red\n" : y == 3 ? "usemtl\t\n" : "usemtl blue\n";
+        obj += y == 4 ? "usemtl\n" : y % 2 == 0 ? "usemtl red\n" : y == 3 ? "usemtl\t\n" : "usemtl blue\n";
         obj += "g row" + std::to_string(y) + "\n";
         for (int x = 0; x < 5; ++x) {
             const int a = y * 6 + x + 1;

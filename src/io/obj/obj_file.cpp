@@ -102,7 +102,8 @@ std::vector<detail::PieceMaterials> materials_in_force(const std::vector<detail:
         in_force[i].entering = current;
         for (const detail::MaterialStatement& statement : pieces[i].materials) {
             if (!statement.library) {
-                const auto found = statement.names.empty() ? ids.end() : ids.find(statement.names[0]);
+                // A usemtl without a name picks a material without one (a bare newmtl), as tinyobjloader did.
+                const auto found = ids.find(statement.names.empty() ? std::string() : statement.names[0]);
                 current = found == ids.end() ? -1 : found->second;
                 in_force[i].by_statement.push_back(current);
                 continue;

@@ -33,13 +33,16 @@ private:
 enum class ObjStatement { other, position, uv, normal, face, point, line, library, material };
 
 // The statement a line makes: its first word after any spaces and tabs, which a space or a tab
-// must follow ("v" alone at a line's end is no vertex); `rest` receives what follows the keyword.
+// must follow ("v" alone at a line's end is no vertex; "usemtl" is); `rest` receives what follows the keyword.
 inline ObjStatement statement_of(std::string_view line, std::string_view& rest) {
     std::size_t start = 0;
     while (start < line.size() && (line[start] == ' ' || line[start] == '\t')) ++start;
     std::size_t end = start;
     while (end < line.size() && line[end] != ' ' && line[end] != '\t') ++end;
-    if (end == line.size()) return ObjStatement::other;
+    if (end == line.size()) {  // a bare usemtl is the default material, as tinyobjloader took it
+        rest = {};
+        return line.substr(start) == "usemtl" ? ObjStatement::material : ObjStatement::other;
+    }
     const std::string_view keyword = line.substr(start, end - start);
     rest = line.substr(end);
     switch (keyword.size()) {

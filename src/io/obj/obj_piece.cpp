@@ -275,6 +275,7 @@ private:
             return;
         }
         ++piece_.faces;
+        if (earlier_bad_ != nullptr) return;  // only checking
         // Each piece turned from OBJ's counter-clockwise order to raster's clockwise one.
         if (corners_.size() == 3) {
             piece_.triangles.push_back({{corners_[0], corners_[2], corners_[1]}, material_});
@@ -287,8 +288,10 @@ private:
 
     void point(std::string_view rest) {
         Words words(rest);
-        for (std::string_view word; !(word = words.next()).empty();)
-            piece_.points.push_back(corner_of(word, "point", rest));
+        for (std::string_view word; !(word = words.next()).empty();) {
+            const ObjCorner corner = corner_of(word, "point", rest);
+            if (earlier_bad_ == nullptr) piece_.points.push_back(corner);
+        }
     }
 
     void segments(std::string_view rest) {
@@ -297,7 +300,7 @@ private:
         ObjCorner previous;
         for (std::string_view word; !(word = words.next()).empty(); ++count) {
             const ObjCorner corner = corner_of(word, "line", rest);
-            if (count > 0) piece_.segments.push_back({previous, corner});
+            if (count > 0 && earlier_bad_ == nullptr) piece_.segments.push_back({previous, corner});
             previous = corner;
         }
         if (count < 2 && piece_.short_line == 0) piece_.short_line = line_;
@@ -327,7 +330,7 @@ private:
         piece_.materials.push_back(std::move(statement));
     }
 
-    // usemtl and no name: the default material.
+    // usemtl and no name: a material without a name, if a library has one, else the default.
     void material(std::string_view rest) {
         Words words(rest);
         MaterialStatement statement{false, {}, line_};

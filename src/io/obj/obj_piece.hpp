@@ -91,7 +91,8 @@ struct ObjRange {
 [[nodiscard]] ObjCounts count_obj_range(std::string_view text, bool first);
 
 // Reads a range. Throws std::runtime_error "NAME:LINE: ..." for the first problem in it. With
-// `earlier_bad` (the bad numbers of every range before), a use of one of them throws too.
+// `earlier_bad` (the bad numbers of every range before, or of all ranges), a use of one of them
+// throws too, and the range is only checked: what it draws is not kept.
 [[nodiscard]] ObjPiece read_obj_range(const ObjRange& range, const std::string& name, std::size_t max_corners,
                                       std::size_t max_line_bytes, const BadNumbers* earlier_bad = nullptr);
 

@@ -53,21 +53,34 @@ ObjPieces read_obj_pieces(std::string_view text, const std::string& name, std::s
     for_each_index(texts.size(), threads, [&](std::size_t i) {
         try {
             read.pieces[i] = read_obj_range(read.ranges[i], name, max_corners, max_line_bytes);
-        } catch (const std::runtime_error&) {
+        } catch (...) {
             failures[i] = std::current_exception();
         }
     });
-    // A use of a bad number of an earlier range is found by reading the range again knowing them.
-    BadNumbers earlier;
+    // A range that may use a bad number of an earlier one is checked again knowing them all (a range
+    // looks up only indices before its own), every such range at once.
+    BadNumbers bad;
+    std::vector<bool> bad_before(texts.size());
     for (std::size_t i = 0; i < texts.size(); ++i) {
-        if (any(earlier) && (failures[i] || read.pieces[i].names_earlier))
-            (void)read_obj_range(read.ranges[i], name, max_corners, max_line_bytes, &earlier);
+        bad_before[i] = any(bad);
+        for (std::size_t k = 0; k < 3; ++k)
+            bad[k].insert(bad[k].end(), read.pieces[i].bad[k].begin(), read.pieces[i].bad[k].end());
+    }
+    std::vector<std::exception_ptr> checked(texts.size());
+    for_each_index(texts.size(), threads, [&](std::size_t i) {
+        if (!bad_before[i] || !(failures[i] || read.pieces[i].names_earlier)) return;
+        try {
+            (void)read_obj_range(read.ranges[i], name, max_corners, max_line_bytes, &bad);
+        } catch (...) {
+            checked[i] = std::current_exception();
+        }
+    });
+    for (std::size_t i = 0; i < texts.size(); ++i) {
+        if (checked[i]) std::rethrow_exception(checked[i]);
         if (failures[i]) std::rethrow_exception(failures[i]);
         const ObjPiece& piece = read.pieces[i];
         if (piece.counts.lines != counts[i].lines || piece.counts.defined != counts[i].defined)
             throw std::runtime_error("its lines were counted two ways; please report this file");
-        for (std::size_t k = 0; k < 3; ++k)
-            earlier[k].insert(earlier[k].end(), piece.bad[k].begin(), piece.bad[k].end());
     }
     return read;
 }

@@ -17,7 +17,8 @@ struct ObjPieces {
     std::vector<ObjPiece> pieces;
 };
 
-// Reads the text in up to `threads` ranges split at line ends, each at least `range_bytes` long; throws
+// Reads the text in up to `threads` ranges split at line ends, of about equal length and no more than one per
+// `range_bytes`; throws
 // std::runtime_error "NAME:LINE: ..." for the first problem in file order, as one reading from the start would.
 [[nodiscard]] ObjPieces read_obj_pieces(std::string_view text, const std::string& name, std::size_t max_corners,
                                         std::size_t max_line_bytes, std::size_t threads, std::size_t range_bytes);
