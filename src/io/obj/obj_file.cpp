@@ -41,8 +41,6 @@ struct BadModel : std::runtime_error {
 
 // What the pieces found besides geometry, with the warnings that say it once per cause.
 detail::ObjSurvey survey_of(const std::vector<detail::ObjPiece>& pieces, const std::string& name) {
-    static constexpr std::array<const char*, 3> kKindName = {"vertex", "texture coordinate", "normal"};
-    static constexpr std::array<const char*, 3> kKindPlural = {"vertices", "texture coordinates", "normals"};
     detail::ObjSurvey survey;
     std::size_t empty_library_line = 0, empty_libraries = 0;
     std::array<const detail::BadNumber*, 3> first_bad{};
@@ -83,9 +81,9 @@ detail::ObjSurvey survey_of(const std::vector<detail::ObjPiece>& pieces, const s
         if (first_bad[k] == nullptr) continue;  // a face using one would have thrown
         const std::size_t more = bad[k] - 1;
         survey.warnings.push_back(
-            name + ":" + std::to_string(first_bad[k]->line) + ": " + kKindName[k] + " " +
+            name + ":" + std::to_string(first_bad[k]->line) + ": " + detail::kObjKindNames[k] + " " +
             std::to_string(first_bad[k]->index + 1) + " has " + first_bad[k]->problem + "; no face uses it" +
-            (more > 0 ? " (nor " + std::to_string(more) + " more such " + kKindPlural[k] + ")" : ""));
+            (more > 0 ? " (nor " + std::to_string(more) + " more such " + detail::kObjKindPlurals[k] + ")" : ""));
     }
     return survey;
 }
@@ -125,8 +123,7 @@ std::vector<detail::PieceMaterials> materials_in_force(const std::vector<detail:
 // The text's pieces: each holds its own values, so the text may go once they are read.
 std::vector<detail::ObjPiece> pieces_of(std::string_view text, const std::string& name, const ObjOptions& options) {
     return detail::read_obj_pieces(text, name, kMaxFaceCorners, options.max_line_bytes,
-                                   detail::threads_or_cores(options.threads), options.range_bytes)
-        .pieces;
+                                   detail::threads_or_cores(options.threads), options.range_bytes);
 }
 
 Model model_from(std::vector<detail::ObjPiece> pieces, const std::string& name, const std::filesystem::path& directory,

@@ -18,8 +18,6 @@ namespace raster::detail {
 
 namespace {
 
-constexpr std::array<const char*, 3> kKindName = {"vertex", "texture coordinate", "normal"};
-constexpr std::array<const char*, 3> kKindPlural = {"vertices", "texture coordinates", "normals"};
 // How many numbers of each kind must be there (a texture coordinate may give u alone); vt's
 // third, like v's colours, is not a coordinate raster uses.
 constexpr std::array<std::size_t, 3> kNeededNumbers = {3, 1, 3};
@@ -142,7 +140,7 @@ private:
         }
         const std::size_t index = range_.before.defined[kind] + piece_.counts.defined[kind]++;
         if (index >= kMaxSoupVertices)
-            fail("more " + std::string(kKindPlural[kind]) + " than raster counts in 32 bits");
+            fail("more " + std::string(kObjKindPlurals[kind]) + " than raster counts in 32 bits");
         if (problem.empty()) return true;
         piece_.bad[kind].push_back({index, line_, std::move(problem)});
         return false;
@@ -197,13 +195,13 @@ private:
         const auto found = std::lower_bound(list.begin(), list.end(), index,
                                             [](const BadNumber& b, std::size_t i) { return b.index < i; });
         if (found == list.end() || found->index != index) return;
-        fail(std::string("the ") + statement + " uses " + kKindName[kind] + " " + std::to_string(index + 1) +
+        fail(std::string("the ") + statement + " uses " + kObjKindNames[kind] + " " + std::to_string(index + 1) +
              ", but line " + std::to_string(found->line) + " gives it " + found->problem);
     }
 
     // One index of a corner, OBJ's way: 1 is the first defined so far, -1 the last one.
     std::size_t resolved_index(std::string_view text, ObjKind kind, const char* statement) const {
-        const std::string what = kKindName[kind];
+        const std::string what = kObjKindNames[kind];
         long long value = 0;
         const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
         if (error != std::errc() || end != text.data() + text.size())

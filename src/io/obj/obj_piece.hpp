@@ -15,6 +15,8 @@ namespace raster::detail {
 
 // v, vt and vn: what a corner names, in the order of the corner's fields.
 enum ObjKind : std::size_t { kObjPosition, kObjUv, kObjNormal };
+inline constexpr std::array<const char*, 3> kObjKindNames = {"vertex", "texture coordinate", "normal"};
+inline constexpr std::array<const char*, 3> kObjKindPlurals = {"vertices", "texture coordinates", "normals"};
 
 // How many lines, and v, vt and vn statements, a range holds (or all the ranges before one).
 struct ObjCounts {

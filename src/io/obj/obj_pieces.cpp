@@ -36,23 +36,23 @@ bool any(const BadNumbers& bad) {
 
 }  // namespace
 
-ObjPieces read_obj_pieces(std::string_view text, const std::string& name, std::size_t max_corners,
-                          std::size_t max_line_bytes, std::size_t threads, std::size_t range_bytes) {
-    ObjPieces read;
+std::vector<ObjPiece> read_obj_pieces(std::string_view text, const std::string& name, std::size_t max_corners,
+                                      std::size_t max_line_bytes, std::size_t threads, std::size_t range_bytes) {
+    std::vector<ObjRange> ranges;
     const std::vector<std::string_view> texts = ranges_of(text, threads, range_bytes);
     std::vector<ObjCounts> counts(texts.size());
     for_each_index(texts.size(), threads, [&](std::size_t i) { counts[i] = count_obj_range(texts[i], i == 0); });
     ObjCounts before;
     for (std::size_t i = 0; i < texts.size(); ++i) {
-        read.ranges.push_back({texts[i], before, i == 0});
+        ranges.push_back({texts[i], before, i == 0});
         before.lines += counts[i].lines;
         for (std::size_t k = 0; k < 3; ++k) before.defined[k] += counts[i].defined[k];
     }
-    read.pieces.resize(texts.size());
+    std::vector<ObjPiece> pieces(texts.size());
     std::vector<std::exception_ptr> failures(texts.size());
     for_each_index(texts.size(), threads, [&](std::size_t i) {
         try {
-            read.pieces[i] = read_obj_range(read.ranges[i], name, max_corners, max_line_bytes);
+            pieces[i] = read_obj_range(ranges[i], name, max_corners, max_line_bytes);
         } catch (...) {
             failures[i] = std::current_exception();
         }
@@ -64,13 +64,13 @@ ObjPieces read_obj_pieces(std::string_view text, const std::string& name, std::s
     for (std::size_t i = 0; i < texts.size(); ++i) {
         bad_before[i] = any(bad);
         for (std::size_t k = 0; k < 3; ++k)
-            bad[k].insert(bad[k].end(), read.pieces[i].bad[k].begin(), read.pieces[i].bad[k].end());
+            bad[k].insert(bad[k].end(), pieces[i].bad[k].begin(), pieces[i].bad[k].end());
     }
     std::vector<std::exception_ptr> checked(texts.size());
     for_each_index(texts.size(), threads, [&](std::size_t i) {
-        if (!bad_before[i] || !(failures[i] || read.pieces[i].names_earlier)) return;
+        if (!bad_before[i] || !(failures[i] || pieces[i].names_earlier)) return;
         try {
-            (void)read_obj_range(read.ranges[i], name, max_corners, max_line_bytes, &bad);
+            (void)read_obj_range(ranges[i], name, max_corners, max_line_bytes, &bad);
         } catch (...) {
             checked[i] = std::current_exception();
         }
@@ -78,11 +78,11 @@ ObjPieces read_obj_pieces(std::string_view text, const std::string& name, std::s
     for (std::size_t i = 0; i < texts.size(); ++i) {
         if (checked[i]) std::rethrow_exception(checked[i]);
         if (failures[i]) std::rethrow_exception(failures[i]);
-        const ObjPiece& piece = read.pieces[i];
+        const ObjPiece& piece = pieces[i];
         if (piece.counts.lines != counts[i].lines || piece.counts.defined != counts[i].defined)
             throw std::runtime_error("its lines were counted two ways; please report this file");
     }
-    return read;
+    return pieces;
 }
 
 PolygonSoup join_obj_pieces(std::vector<ObjPiece>& pieces, const std::vector<PieceMaterials>& materials,

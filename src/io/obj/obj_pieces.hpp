@@ -12,16 +12,12 @@
 // pieces joined in file order into one soup.
 namespace raster::detail {
 
-struct ObjPieces {
-    std::vector<ObjRange> ranges;
-    std::vector<ObjPiece> pieces;
-};
-
 // Reads the text in up to `threads` ranges split at line ends, of about equal length and no more than one per
 // `range_bytes`; throws
 // std::runtime_error "NAME:LINE: ..." for the first problem in file order, as one reading from the start would.
-[[nodiscard]] ObjPieces read_obj_pieces(std::string_view text, const std::string& name, std::size_t max_corners,
-                                        std::size_t max_line_bytes, std::size_t threads, std::size_t range_bytes);
+[[nodiscard]] std::vector<ObjPiece> read_obj_pieces(std::string_view text, const std::string& name,
+                                                    std::size_t max_corners, std::size_t max_line_bytes,
+                                                    std::size_t threads, std::size_t range_bytes);
 
 // The material each piece's statements put in force (-1 for mtllib and the default), and the one in force where it
 // starts.
