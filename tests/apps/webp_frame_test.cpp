@@ -6,21 +6,14 @@
 #include "support/scratch.hpp"
 #include "support/webp_files.hpp"
 
+#include "support/sanitizers.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
-
-// AddressSanitizer reserves terabytes of address space up front, so RLIMIT_AS cannot work there.
-#if defined(__SANITIZE_ADDRESS__)
-#define RASTER_TEST_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define RASTER_TEST_ASAN 1
-#endif
-#endif
 
 using raster::Framebuffer;
 using test_support::kAnimatedCube;

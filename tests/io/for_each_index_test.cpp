@@ -2,6 +2,8 @@
 // done by the threads that run when no more can start (src/io/for_each_index.hpp).
 #include "io/for_each_index.hpp"
 
+#include "support/sanitizers.hpp"
+
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -13,14 +15,6 @@
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
-
-#if defined(__SANITIZE_ADDRESS__)
-#define RASTER_TEST_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define RASTER_TEST_ASAN 1
-#endif
-#endif
 
 TEST(ForEachIndex, EveryIndexRunsOnceAndTheLowestFailureIsRethrown) {
     std::vector<std::atomic<int>> runs(100);

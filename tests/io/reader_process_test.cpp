@@ -9,20 +9,14 @@
 
 #include <raster/io/reader_service.hpp>
 
+#include "support/sanitizers.hpp"
+
 #include <gtest/gtest.h>
 
 #include <csignal>
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#if defined(__SANITIZE_ADDRESS__)
-#define ADDRESS_SANITIZER 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define ADDRESS_SANITIZER 1
-#endif
-#endif
 
 using test_support::ScratchDir;
 using test_support::write_text;
@@ -70,7 +64,7 @@ TEST(ReaderProcess, AReaderThatNeverEndsIsStoppedAtItsTimeLimit) {
 }
 
 TEST(ReaderProcess, AReaderThatAllocatesWithoutEndIsStoppedAtItsMemoryLimit) {
-#ifdef ADDRESS_SANITIZER
+#ifdef RASTER_TEST_ASAN
     GTEST_SKIP() << "AddressSanitizer reserves terabytes of address space, so the child's address space is not limited";
 #else
     raster::ReaderLimits limits;
